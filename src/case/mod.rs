@@ -1,0 +1,815 @@
+//! Typed cases: what a deck says, in SI units, with physical checks.
+//!
+//! [`Deck::from_raw`] turns the namelist values of each case into [`Case`]: flight conditions
+//! ([`FlightInput`]), reference dimensions ([`Reference`]), synthesis ([`Synthesis`]), body
+//! ([`Body`]), planforms ([`Planform`]), airfoil sections ([`SectionInput`]) and the control
+//! cards. Lengths are metres, areas square metres, pressure pascals, temperature kelvins, weight
+//! newtons; angles stay in degrees. Namelists not yet used by any method (flaps, power, ground
+//! effect, ...) are kept as read, in the deck's units, in [`Case::other`].
+
+pub mod units;
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use crate::deck::cards::{AirfoilCard, Cards, DerivUnit, Dim, Surface};
+use crate::deck::schema::{self, Dimension};
+use crate::deck::{NamelistValues, RawCase, RawDeck, Value};
+use crate::error::{DeckProblem, Diagnostic, Severity};
+
+/// Accessor over one namelist's values that converts to SI.
+struct Nl<'a> {
+    name: &'a str,
+    values: Option<&'a NamelistValues>,
+    dim: Dim,
+    /// SYNTHS SCALE, applied to geometric lengths and areas (not to FLTCON or roughness).
+    scale: f64,
+}
+
+impl<'a> Nl<'a> {
+    fn dimension(&self, var: &str) -> Dimension {
+        schema::namelist(self.name)
+            .and_then(|s| s.var(var))
+            .map_or(Dimension::None, |v| v.dimension)
+    }
+
+    fn to_si(&self, var: &str, x: f64) -> f64 {
+        let d = self.dimension(var);
+        let geometric = self.name != "FLTCON" && var != "ROUGFC";
+        let scale = match d {
+            Dimension::Length if geometric => self.scale,
+            Dimension::Area if geometric => self.scale * self.scale,
+            _ => 1.0,
+        };
+        units::to_si(x, self.dim, d) * scale
+    }
+
+    fn raw(&self, var: &str) -> Option<&'a Value> {
+        self.values?.get(var)
+    }
+
+    /// Scalar in SI.
+    fn real(&self, var: &str) -> Option<f64> {
+        let v = self.raw(var)?.scalar()?;
+        Some(self.to_si(var, v))
+    }
+
+    /// Leading assigned elements in SI.
+    fn array(&self, var: &str) -> Vec<f64> {
+        self.raw(var)
+            .and_then(Value::numbers)
+            .map(|v| {
+                v.iter()
+                    .map_while(|x| *x)
+                    .map(|x| self.to_si(var, x))
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    /// Array truncated to the count its count variable gives (when given).
+    fn counted(&self, var: &str, count: Option<usize>) -> Vec<f64> {
+        let mut v = self.array(var);
+        if let Some(n) = count {
+            v.truncate(n);
+        }
+        v
+    }
+
+    fn count(&self, var: &str) -> Option<usize> {
+        self.raw(var)?
+            .scalar()
+            .filter(|c| *c >= 0.0)
+            .map(|c| (c + 0.5) as usize)
+    }
+
+    fn logical(&self, var: &str) -> Option<bool> {
+        self.raw(var)?.logical()
+    }
+}
+
+/// How the Mach and altitude lists combine into flight conditions (FLTCON LOOP).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Loop {
+    /// LOOP=1: Mach and altitude vary together, pairwise.
+    #[default]
+    Together,
+    /// LOOP=2: altitude fixed in the outer loop, Mach varied in the inner.
+    AltitudeOuter,
+    /// LOOP=3: Mach fixed in the outer loop, altitude varied in the inner.
+    MachOuter,
+}
+
+/// $FLTCON in SI (angles in degrees).
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct FlightInput {
+    pub mach: Vec<f64>,
+    /// Free-stream velocity, m/s.
+    pub velocity: Vec<f64>,
+    /// Reynolds number per metre, when given.
+    pub reynolds_per_length: Vec<f64>,
+    /// Altitude, m.
+    pub altitude: Vec<f64>,
+    /// Free-stream static pressure, Pa, when given.
+    pub pressure: Vec<f64>,
+    /// Free-stream static temperature, K, when given.
+    pub temperature: Vec<f64>,
+    pub alpha_deg: Vec<f64>,
+    pub loop_mode: Loop,
+    /// Weight, N.
+    pub weight: Option<f64>,
+    /// Flight-path angle, deg.
+    pub gamma_deg: Option<f64>,
+    /// Transition strips present (TR=1).
+    pub transition_strips: bool,
+    pub stmach: Option<f64>,
+    pub tsmach: Option<f64>,
+    pub hypersonic: bool,
+    /// NALT is given (LOOP=1 then checks it against NMACH).
+    pub nalt_given: bool,
+}
+
+/// $OPTINS: reference dimensions and roughness, SI.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct Reference {
+    /// Reference area, m².
+    pub area: Option<f64>,
+    /// Longitudinal reference length (mean aerodynamic chord), m.
+    pub chord: Option<f64>,
+    /// Lateral reference length (span), m.
+    pub span: Option<f64>,
+    /// Surface roughness height, m.
+    pub roughness: Option<f64>,
+}
+
+/// $SYNTHS: positions of the components and the moment reference centre, SI; angles in degrees.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct Synthesis {
+    pub xcg: Option<f64>,
+    pub zcg: Option<f64>,
+    pub xw: Option<f64>,
+    pub zw: Option<f64>,
+    pub aliw_deg: Option<f64>,
+    pub xh: Option<f64>,
+    pub zh: Option<f64>,
+    pub alih_deg: Option<f64>,
+    pub xv: Option<f64>,
+    pub zv: Option<f64>,
+    pub xvf: Option<f64>,
+    pub zvf: Option<f64>,
+    pub yv: Option<f64>,
+    pub yf: Option<f64>,
+    pub phiv_deg: Option<f64>,
+    pub phif_deg: Option<f64>,
+    pub hinax: Option<f64>,
+    pub scale: Option<f64>,
+    /// Vertical tail above the body reference plane (default true).
+    pub vertup: bool,
+}
+
+/// $BODY: stations and their areas, perimeters, radii and contours, SI.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct Body {
+    pub x: Vec<f64>,
+    pub s: Vec<f64>,
+    pub p: Vec<f64>,
+    pub r: Vec<f64>,
+    pub zu: Vec<f64>,
+    pub zl: Vec<f64>,
+    pub bnose: Option<f64>,
+    pub btail: Option<f64>,
+    pub bln: Option<f64>,
+    pub bla: Option<f64>,
+    pub ds: Option<f64>,
+    pub itype: Option<f64>,
+    pub method: Option<f64>,
+    pub ellip: Option<f64>,
+}
+
+/// $WGPLNF, $HTPLNF, $VTPLNF, $VFPLNF: planform, SI; angles in degrees.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct Planform {
+    pub chrdr: Option<f64>,
+    pub chrdbp: Option<f64>,
+    pub chrdtp: Option<f64>,
+    pub sspn: Option<f64>,
+    pub sspne: Option<f64>,
+    pub sspnop: Option<f64>,
+    pub sspndd: Option<f64>,
+    pub savsi_deg: Option<f64>,
+    pub savso_deg: Option<f64>,
+    pub chstat: Option<f64>,
+    pub twista_deg: Option<f64>,
+    pub dhdadi_deg: Option<f64>,
+    pub dhdado_deg: Option<f64>,
+    /// 1 straight tapered, 2 double delta, 3 cranked.
+    pub planform_type: Option<f64>,
+    pub swafp_deg: Option<f64>,
+}
+
+/// $LARWB: the low-aspect-ratio wing-body's reference quantities, SI. When present they
+/// replace SREF, CBARR (by L) and XCG, as in the original.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct LowAspectRatioWingBody {
+    pub sref: Option<f64>,
+    /// Body length L, the reference length.
+    pub length: Option<f64>,
+    pub xcg: Option<f64>,
+}
+
+/// $WGSCHR and its kin: section characteristics the user gives (fractions of chord).
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct SectionInput {
+    /// Every scalar given, by variable name.
+    pub scalars: BTreeMap<String, f64>,
+    pub xcord: Vec<f64>,
+    pub yupper: Vec<f64>,
+    pub ylower: Vec<f64>,
+    pub mean: Vec<f64>,
+    pub thick: Vec<f64>,
+    /// Per-Mach inputs (CLALPA, CLMAX, XAC).
+    pub per_mach: BTreeMap<String, Vec<f64>>,
+    pub camber: Option<bool>,
+}
+
+/// One case of a deck, typed and in SI.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Case {
+    pub number: usize,
+    pub first_line: usize,
+    pub caseid: Option<String>,
+    pub dim: Dim,
+    /// SYNTHS SCALE (default 1): geometry inside is the deck's geometry times this factor.
+    pub scale: f64,
+    pub deriv: DerivUnit,
+    pub cards: Cards,
+    pub flight: Option<FlightInput>,
+    pub reference: Reference,
+    pub synthesis: Option<Synthesis>,
+    pub body: Option<Body>,
+    pub wing: Option<Planform>,
+    pub horizontal_tail: Option<Planform>,
+    pub vertical_tail: Option<Planform>,
+    pub ventral_fin: Option<Planform>,
+    pub sections: BTreeMap<String, SectionInput>,
+    pub larwb: Option<LowAspectRatioWingBody>,
+    pub airfoils: Vec<AirfoilCard>,
+    /// Namelists kept as read (deck units): flaps, power, ground effect, experimental data ...
+    pub other: BTreeMap<String, NamelistValues>,
+    pub save: bool,
+}
+
+/// A deck: its typed cases and every diagnostic (reader's and physical checks').
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Deck {
+    pub file: String,
+    pub cases: Vec<Case>,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Deck {
+    pub fn error_count(&self) -> usize {
+        self.diagnostics.iter().filter(|d| d.is_error()).count()
+    }
+
+    pub fn warning_count(&self) -> usize {
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity == Severity::Warning)
+            .count()
+    }
+
+    pub fn has_errors(&self) -> bool {
+        self.error_count() > 0
+    }
+
+    /// Types every case of a deck as read, adding the physical checks' diagnostics.
+    pub fn from_raw(raw: RawDeck) -> Deck {
+        let mut diagnostics = raw.diagnostics;
+        let cases = raw
+            .cases
+            .iter()
+            .map(|c| {
+                let (case, mut d) = Case::from_raw(c, &raw.file);
+                diagnostics.append(&mut d);
+                case
+            })
+            .collect();
+        Deck {
+            file: raw.file,
+            cases,
+            diagnostics,
+        }
+    }
+}
+
+const PLANFORMS: [(&str, &str); 4] = [
+    ("WGPLNF", "WGSCHR"),
+    ("HTPLNF", "HTSCHR"),
+    ("VTPLNF", "VTSCHR"),
+    ("VFPLNF", "VFSCHR"),
+];
+
+/// Namelists that have a typed home in [`Case`].
+const TYPED: &[&str] = &[
+    "FLTCON", "OPTINS", "SYNTHS", "BODY", "WGPLNF", "HTPLNF", "VTPLNF", "VFPLNF", "WGSCHR",
+    "HTSCHR", "VTSCHR", "VFSCHR",
+];
+
+fn flight(n: &Nl) -> FlightInput {
+    let nmach = n.count("NMACH");
+    let nalt = n.count("NALT");
+    let nalpha = n.count("NALPHA");
+    let loop_mode = match n
+        .raw("LOOP")
+        .and_then(Value::scalar)
+        .map(|l| (l + 0.5) as i64)
+    {
+        Some(2) => Loop::AltitudeOuter,
+        Some(3) => Loop::MachOuter,
+        _ => Loop::Together,
+    };
+    let mut alpha = n.counted("ALSCHD", nalpha);
+    if alpha.is_empty() {
+        alpha = n.counted("ALPHA", nalpha);
+    }
+    FlightInput {
+        mach: n.counted("MACH", nmach),
+        velocity: n.counted("VINF", nmach),
+        reynolds_per_length: n.counted("RNNUB", nmach),
+        altitude: n.counted("ALT", nalt),
+        pressure: n.counted("PINF", nalt),
+        temperature: n.counted("TINF", nalt),
+        alpha_deg: alpha,
+        loop_mode,
+        weight: n.real("WT"),
+        gamma_deg: n.real("GAMMA"),
+        transition_strips: n.real("TR").is_some_and(|t| t > 0.0),
+        stmach: n.real("STMACH"),
+        tsmach: n.real("TSMACH"),
+        hypersonic: n.logical("HYPERS").unwrap_or(false),
+        nalt_given: nalt.is_some_and(|k| k > 0),
+    }
+}
+
+fn planform(n: &Nl) -> Planform {
+    Planform {
+        chrdr: n.real("CHRDR"),
+        chrdbp: n.real("CHRDBP"),
+        chrdtp: n.real("CHRDTP"),
+        sspn: n.real("SSPN"),
+        sspne: n.real("SSPNE"),
+        sspnop: n.real("SSPNOP"),
+        sspndd: n.real("SSPNDD"),
+        savsi_deg: n.real("SAVSI"),
+        savso_deg: n.real("SAVSO"),
+        chstat: n.real("CHSTAT"),
+        twista_deg: n.real("TWISTA"),
+        dhdadi_deg: n.real("DHDADI"),
+        dhdado_deg: n.real("DHDADO"),
+        planform_type: n.real("TYPE"),
+        swafp_deg: n.real("SWAFP"),
+    }
+}
+
+fn section(n: &Nl) -> SectionInput {
+    let npts = n.count("NPTS");
+    let mut s = SectionInput {
+        xcord: n.counted("XCORD", npts),
+        yupper: n.counted("YUPPER", npts),
+        ylower: n.counted("YLOWER", npts),
+        mean: n.counted("MEAN", npts),
+        thick: n.counted("THICK", npts),
+        camber: n.logical("CAMBER"),
+        ..SectionInput::default()
+    };
+    if let Some(values) = n.values {
+        for (name, v) in values {
+            match name.as_str() {
+                "XCORD" | "YUPPER" | "YLOWER" | "MEAN" | "THICK" => {}
+                "CLALPA" | "CLMAX" | "XAC" | "SLOPE" => {
+                    s.per_mach.insert(name.clone(), n.array(name));
+                }
+                _ => {
+                    if let Some(x) = v.scalar() {
+                        s.scalars.insert(name.clone(), x);
+                    }
+                }
+            }
+        }
+    }
+    s
+}
+
+/// Collects the physical checks of one case.
+struct Checks<'a> {
+    file: &'a str,
+    line: usize,
+    origins: &'a BTreeMap<String, (usize, usize)>,
+    out: Vec<Diagnostic>,
+}
+
+impl Checks<'_> {
+    fn push(
+        &mut self,
+        severity: Severity,
+        card: &str,
+        var: Option<&str>,
+        message: String,
+        hint: Option<&str>,
+    ) {
+        let (line, column) = var
+            .and_then(|v| self.origins.get(&format!("{card}.{v}")))
+            .copied()
+            .unwrap_or((self.line, 0));
+        self.out.push(Diagnostic {
+            severity,
+            file: self.file.to_string(),
+            line,
+            column,
+            card: Some(card.to_string()),
+            variable: var.map(str::to_string),
+            problem: DeckProblem::Physical { message },
+            hint: hint.map(str::to_string),
+        });
+    }
+
+    fn positive(&mut self, card: &str, var: &str, v: Option<f64>) {
+        if let Some(x) = v {
+            if x <= 0.0 {
+                self.push(
+                    Severity::Error,
+                    card,
+                    Some(var),
+                    format!("{var} must be positive; found {x}"),
+                    None,
+                );
+            }
+        }
+    }
+}
+
+impl Case {
+    /// Types one case as read; returns it with the diagnostics of its physical checks.
+    pub fn from_raw(raw: &RawCase, file: &str) -> (Case, Vec<Diagnostic>) {
+        let dim = raw.cards.dim.unwrap_or_default();
+        let scale = raw
+            .scalar("SYNTHS", "SCALE")
+            .filter(|s| *s > 0.0)
+            .unwrap_or(1.0);
+        let nl = |name: &'static str| Nl {
+            name,
+            values: raw.namelists.get(name),
+            dim,
+            scale,
+        };
+        let has = |name: &str| raw.namelists.contains_key(name);
+        let fl = nl("FLTCON");
+        let op = nl("OPTINS");
+        let sy = nl("SYNTHS");
+        let bo = nl("BODY");
+        let mut planforms: Vec<Option<Planform>> = Vec::new();
+        let mut sections = BTreeMap::new();
+        for ((pl, sc), surface) in PLANFORMS.iter().zip([
+            Surface::Wing,
+            Surface::HorizontalTail,
+            Surface::VerticalTail,
+            Surface::VentralFin,
+        ]) {
+            planforms.push(has(pl).then(|| planform(&nl(pl))));
+            if has(sc) {
+                sections.insert(surface.name().to_string(), section(&nl(sc)));
+            }
+        }
+        let case = Case {
+            number: raw.number,
+            first_line: raw.first_line,
+            caseid: raw.caseid.clone(),
+            dim,
+            scale,
+            deriv: raw.cards.deriv.unwrap_or_default(),
+            cards: raw.cards.clone(),
+            flight: has("FLTCON").then(|| flight(&fl)),
+            reference: Reference {
+                area: op.real("SREF"),
+                chord: op.real("CBARR"),
+                span: op.real("BLREF"),
+                roughness: op.real("ROUGFC"),
+            },
+            synthesis: has("SYNTHS").then(|| Synthesis {
+                xcg: sy.real("XCG"),
+                zcg: sy.real("ZCG"),
+                xw: sy.real("XW"),
+                zw: sy.real("ZW"),
+                aliw_deg: sy.real("ALIW"),
+                xh: sy.real("XH"),
+                zh: sy.real("ZH"),
+                alih_deg: sy.real("ALIH"),
+                xv: sy.real("XV"),
+                zv: sy.real("ZV"),
+                xvf: sy.real("XVF"),
+                zvf: sy.real("ZVF"),
+                yv: sy.real("YV"),
+                yf: sy.real("YF"),
+                phiv_deg: sy.real("PHIV"),
+                phif_deg: sy.real("PHIF"),
+                hinax: sy.real("HINAX"),
+                scale: sy.real("SCALE"),
+                vertup: sy.logical("VERTUP").unwrap_or(true),
+            }),
+            body: has("BODY").then(|| {
+                let nx = bo.count("NX");
+                Body {
+                    x: bo.counted("X", nx),
+                    s: bo.counted("S", nx),
+                    p: bo.counted("P", nx),
+                    r: bo.counted("R", nx),
+                    zu: bo.counted("ZU", nx),
+                    zl: bo.counted("ZL", nx),
+                    bnose: bo.real("BNOSE"),
+                    btail: bo.real("BTAIL"),
+                    bln: bo.real("BLN"),
+                    bla: bo.real("BLA"),
+                    ds: bo.real("DS"),
+                    itype: bo.real("ITYPE"),
+                    method: bo.real("METHOD"),
+                    ellip: bo.real("ELLIP"),
+                }
+            }),
+            wing: planforms[0].take(),
+            horizontal_tail: planforms[1].take(),
+            vertical_tail: planforms[2].take(),
+            ventral_fin: planforms[3].take(),
+            sections,
+            larwb: has("LARWB").then(|| {
+                let l = nl("LARWB");
+                LowAspectRatioWingBody {
+                    sref: l.real("SREF"),
+                    length: l.real("L"),
+                    xcg: l.real("XCG"),
+                }
+            }),
+            airfoils: raw.airfoils.clone(),
+            other: raw
+                .namelists
+                .iter()
+                .filter(|(k, _)| !TYPED.contains(&k.as_str()))
+                .map(|(k, v)| (k.clone(), v.clone()))
+                .collect(),
+            save: raw.save,
+        };
+        let mut checks = Checks {
+            file,
+            line: raw.first_line,
+            origins: &raw.origins,
+            out: Vec::new(),
+        };
+        case.check(&mut checks);
+        (case, checks.out)
+    }
+
+    fn check(&self, c: &mut Checks) {
+        // The original runs a case only with $FLTCON and $SYNTHS, unless it is a
+        // low-aspect-ratio wing-body ($LARWB), hypersonic ($HYPEFF) or transverse-jet ($TRNJET)
+        // case; and only with planform and section of the wing and of the horizontal tail
+        // given together (a NACA card is a section).
+        let special = ["LARWB", "HYPEFF", "TRNJET"]
+            .iter()
+            .any(|n| self.other.contains_key(*n));
+        if !special && self.synthesis.is_none() {
+            c.push(
+                Severity::Error,
+                "SYNTHS",
+                None,
+                "the case has no $SYNTHS; the original does not run it".into(),
+                Some("add $SYNTHS with XCG, ZCG and the component positions"),
+            );
+        }
+        let has_section = |surface: Surface| {
+            self.sections.contains_key(surface.name())
+                || self.airfoils.iter().any(|a| a.surface == surface)
+        };
+        for (planform, present, surface, pl, sc) in [
+            (
+                "wing",
+                self.wing.is_some(),
+                Surface::Wing,
+                "WGPLNF",
+                "WGSCHR or NACA-W",
+            ),
+            (
+                "horizontal tail",
+                self.horizontal_tail.is_some(),
+                Surface::HorizontalTail,
+                "HTPLNF",
+                "HTSCHR or NACA-H",
+            ),
+        ] {
+            if present != has_section(surface) {
+                let message = if present {
+                    format!("the {planform} has a planform (${pl}) but no section ({sc}); the original does not run the case")
+                } else {
+                    format!("the {planform} has a section ({sc}) but no planform (${pl}); the original does not run the case")
+                };
+                c.push(Severity::Error, pl, None, message, None);
+            }
+        }
+        if self.vertical_tail.is_none() && has_section(Surface::VerticalTail) {
+            c.push(
+                Severity::Error,
+                "VTPLNF",
+                None,
+                "a vertical-tail section is given without $VTPLNF; the original does not run the case".into(),
+                None,
+            );
+        }
+        match &self.flight {
+            None if special => {}
+            None => c.push(
+                Severity::Error,
+                "FLTCON",
+                None,
+                "the case has no $FLTCON: no flight condition to compute".into(),
+                Some("add $FLTCON with NMACH, MACH(1)=... and NALPHA, ALSCHD(1)=..."),
+            ),
+            Some(f) => {
+                if f.mach.is_empty() && f.velocity.is_empty() {
+                    c.push(
+                        Severity::Error,
+                        "FLTCON",
+                        Some("MACH"),
+                        "neither MACH nor VINF is given".into(),
+                        Some("give NMACH and MACH(1)=..., or VINF(1)=... with ALT or TINF"),
+                    );
+                }
+                if f.alpha_deg.is_empty() {
+                    c.push(
+                        Severity::Warning,
+                        "FLTCON",
+                        Some("ALSCHD"),
+                        "no angle of attack is given: no coefficient table can be computed".into(),
+                        Some("give NALPHA and ALSCHD(1)=..."),
+                    );
+                }
+                for (i, m) in f.mach.iter().enumerate() {
+                    if *m < 0.0 {
+                        c.push(
+                            Severity::Error,
+                            "FLTCON",
+                            Some("MACH"),
+                            format!("MACH({}) is negative: {m}", i + 1),
+                            None,
+                        );
+                    }
+                }
+                for v in &f.velocity {
+                    c.positive("FLTCON", "VINF", Some(*v));
+                }
+                for p in &f.pressure {
+                    c.positive("FLTCON", "PINF", Some(*p));
+                }
+                for t in &f.temperature {
+                    c.positive("FLTCON", "TINF", Some(*t));
+                }
+            }
+        }
+        c.positive("OPTINS", "SREF", self.reference.area);
+        c.positive("OPTINS", "CBARR", self.reference.chord);
+        c.positive("OPTINS", "BLREF", self.reference.span);
+        for (name, p) in [
+            ("WGPLNF", &self.wing),
+            ("HTPLNF", &self.horizontal_tail),
+            ("VTPLNF", &self.vertical_tail),
+            ("VFPLNF", &self.ventral_fin),
+        ] {
+            let Some(p) = p else { continue };
+            c.positive(name, "CHRDR", p.chrdr);
+            c.positive(name, "SSPN", p.sspn);
+            c.positive(name, "SSPNE", p.sspne);
+            if p.chrdr.is_none() {
+                c.push(
+                    Severity::Error,
+                    name,
+                    Some("CHRDR"),
+                    "root chord CHRDR is not given".into(),
+                    None,
+                );
+            }
+            if p.sspn.is_none() {
+                c.push(
+                    Severity::Error,
+                    name,
+                    Some("SSPN"),
+                    "semi-span SSPN is not given".into(),
+                    None,
+                );
+            }
+            if let Some(t) = p.chrdtp {
+                if t < 0.0 {
+                    c.push(
+                        Severity::Error,
+                        name,
+                        Some("CHRDTP"),
+                        format!("tip chord CHRDTP is negative: {t}"),
+                        None,
+                    );
+                }
+            }
+            if let (Some(e), Some(s)) = (p.sspne, p.sspn) {
+                if e > s * (1.0 + 1e-9) {
+                    c.push(
+                        Severity::Error,
+                        name,
+                        Some("SSPNE"),
+                        "exposed semi-span SSPNE is larger than the semi-span SSPN".into(),
+                        None,
+                    );
+                }
+            }
+        }
+        if let Some(b) = &self.body {
+            let n = b.x.len();
+            if n < 2 {
+                c.push(
+                    Severity::Error,
+                    "BODY",
+                    Some("X"),
+                    format!("the body needs at least 2 stations; {n} given"),
+                    None,
+                );
+            }
+            if let Some(i) = b.x.windows(2).position(|w| w[1] < w[0]) {
+                let shown =
+                    |k: usize| units::from_si(b.x[k], self.dim, Dimension::Length) / self.scale;
+                c.push(
+                    Severity::Error,
+                    "BODY",
+                    Some("X"),
+                    format!(
+                        "body stations X must not decrease: X({})={} is less than X({})={}",
+                        i + 2,
+                        shown(i + 1),
+                        i + 1,
+                        shown(i)
+                    ),
+                    None,
+                );
+            }
+            if n >= 2 && b.x[n - 1] - b.x[0] <= 0.0 {
+                c.push(
+                    Severity::Error,
+                    "BODY",
+                    Some("X"),
+                    "body length (last X minus first X) must be positive".into(),
+                    None,
+                );
+            }
+            for (var, arr) in [("R", &b.r), ("S", &b.s), ("P", &b.p)] {
+                if let Some(v) = arr.iter().find(|v| **v < 0.0) {
+                    c.push(
+                        Severity::Error,
+                        "BODY",
+                        Some(var),
+                        format!("{var} has a negative value {v}"),
+                        None,
+                    );
+                }
+            }
+        }
+    }
+
+    /// Namelists present in the case (typed and other), by name.
+    pub fn namelist_names(&self) -> Vec<String> {
+        let mut v = Vec::new();
+        let typed: [(&str, bool); 8] = [
+            ("FLTCON", self.flight.is_some()),
+            ("SYNTHS", self.synthesis.is_some()),
+            ("BODY", self.body.is_some()),
+            ("WGPLNF", self.wing.is_some()),
+            ("HTPLNF", self.horizontal_tail.is_some()),
+            ("VTPLNF", self.vertical_tail.is_some()),
+            ("VFPLNF", self.ventral_fin.is_some()),
+            ("OPTINS", self.reference != Reference::default()),
+        ];
+        for (n, present) in typed {
+            if present {
+                v.push(n.to_string());
+            }
+        }
+        for (sc, surface) in [
+            ("WGSCHR", Surface::Wing),
+            ("HTSCHR", Surface::HorizontalTail),
+            ("VTSCHR", Surface::VerticalTail),
+            ("VFSCHR", Surface::VentralFin),
+        ] {
+            if self.sections.contains_key(surface.name()) {
+                v.push(sc.to_string());
+            }
+        }
+        v.extend(self.other.keys().cloned());
+        v.sort();
+        v
+    }
+}

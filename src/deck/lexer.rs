@@ -1,0 +1,262 @@
+//! Lexemes of namelist text, recognised with nom, one physical line at a time.
+//!
+//! The grammar above lexemes (assignments, value lists, recovery) is in `namelist.rs`: it needs
+//! look-ahead across lines and error recovery, which is clearer written over tokens.
+
+use nom::branch::alt;
+use nom::bytes::complete::{tag_no_case, take_while, take_while1};
+use nom::character::complete::{char, digit0, digit1, one_of};
+use nom::combinator::{opt, recognize};
+use nom::sequence::{pair, tuple};
+use nom::IResult;
+
+/// A lexeme of namelist text.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Tok {
+    /// A name: variable, or the T/F logical constants (decided by the parser).
+    Name(String),
+    /// `$NAME`: opens a namelist.
+    Open(String),
+    /// `$` or `&END`/`$END`: closes a namelist.
+    Close,
+    LParen,
+    RParen,
+    Equals,
+    Comma,
+    Star,
+    /// A number; `integer` when written without `.` or exponent.
+    Number {
+        value: f64,
+        integer: bool,
+        text: String,
+    },
+    Logical(bool),
+    /// Anything else, one character.
+    Other(char),
+}
+
+impl Tok {
+    /// How the token reads in a message.
+    pub fn describe(&self) -> String {
+        match self {
+            Tok::Name(n) => format!("`{n}`"),
+            Tok::Open(n) => format!("`${n}`"),
+            Tok::Close => "`$`".into(),
+            Tok::LParen => "`(`".into(),
+            Tok::RParen => "`)`".into(),
+            Tok::Equals => "`=`".into(),
+            Tok::Comma => "`,`".into(),
+            Tok::Star => "`*`".into(),
+            Tok::Number { text, .. } => format!("`{text}`"),
+            Tok::Logical(b) => format!("`{}`", if *b { ".TRUE." } else { ".FALSE." }),
+            Tok::Other(c) => format!("`{c}`"),
+        }
+    }
+}
+
+/// A token with its 1-based line and column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Token {
+    pub tok: Tok,
+    pub line: usize,
+    pub column: usize,
+}
+
+fn is_name_start(c: char) -> bool {
+    c.is_ascii_alphabetic()
+}
+
+fn is_name_char(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+fn name(i: &str) -> IResult<&str, &str> {
+    recognize(pair(take_while1(is_name_start), take_while(is_name_char)))(i)
+}
+
+fn open_or_close(i: &str) -> IResult<&str, Tok> {
+    let (rest, _) = alt((char('$'), char('&')))(i)?;
+    match name(rest) {
+        Ok((after, n)) if n.eq_ignore_ascii_case("END") => Ok((after, Tok::Close)),
+        Ok((after, n)) => Ok((after, Tok::Open(n.to_ascii_uppercase()))),
+        Err(_) => Ok((rest, Tok::Close)),
+    }
+}
+
+fn logical(i: &str) -> IResult<&str, Tok> {
+    let (rest, word) = alt((
+        tag_no_case(".TRUE."),
+        tag_no_case(".FALSE."),
+        tag_no_case(".T."),
+        tag_no_case(".F."),
+    ))(i)?;
+    let value = word.as_bytes()[1].eq_ignore_ascii_case(&b'T');
+    Ok((rest, Tok::Logical(value)))
+}
+
+fn exponent(i: &str) -> IResult<&str, &str> {
+    recognize(tuple((one_of("eEdD"), opt(one_of("+-")), digit1)))(i)
+}
+
+fn mantissa(i: &str) -> IResult<&str, &str> {
+    alt((
+        recognize(tuple((digit1, opt(pair(char('.'), digit0))))),
+        recognize(pair(char('.'), digit1)),
+    ))(i)
+}
+
+fn number(i: &str) -> IResult<&str, Tok> {
+    let (rest, text) = recognize(tuple((opt(one_of("+-")), mantissa, opt(exponent))))(i)?;
+    let integer = !text.contains(['.', 'e', 'E', 'd', 'D']);
+    let normalised: String = text
+        .chars()
+        .map(|c| if c == 'd' || c == 'D' { 'E' } else { c })
+        .collect();
+    // `recognize` above accepts only digits, one dot, sign and exponent, which f64 parses;
+    // a failure would be a bug in the grammar, reported as an unreadable token rather than a panic.
+    match normalised.parse::<f64>() {
+        Ok(value) if value.is_finite() => Ok((
+            rest,
+            Tok::Number {
+                value,
+                integer,
+                text: text.to_string(),
+            },
+        )),
+        _ => Err(nom::Err::Error(nom::error::Error::new(
+            i,
+            nom::error::ErrorKind::Float,
+        ))),
+    }
+}
+
+fn punct(i: &str) -> IResult<&str, Tok> {
+    let (rest, c) = one_of("(),=*")(i)?;
+    let t = match c {
+        '(' => Tok::LParen,
+        ')' => Tok::RParen,
+        ',' => Tok::Comma,
+        '=' => Tok::Equals,
+        _ => Tok::Star,
+    };
+    Ok((rest, t))
+}
+
+fn token(i: &str) -> IResult<&str, Tok> {
+    alt((open_or_close, logical, number, punct, |i| {
+        name(i).map(|(r, n)| (r, Tok::Name(n.to_ascii_uppercase())))
+    }))(i)
+}
+
+/// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.
+/// `first_column` is the 1-based column of the first character of `text`.
+pub fn lex_line(text: &str, line: usize, first_column: usize, out: &mut Vec<Token>) {
+    let mut rest = text;
+    let mut column = first_column;
+    loop {
+        let trimmed = rest.trim_start_matches([' ', '\t']);
+        column += rest.len() - trimmed.len();
+        rest = trimmed;
+        let Some(c) = rest.chars().next() else {
+            break;
+        };
+        let (after, tok) = match token(rest) {
+            Ok(r) => r,
+            Err(_) => (&rest[c.len_utf8()..], Tok::Other(c)),
+        };
+        out.push(Token { tok, line, column });
+        column += rest[..rest.len() - after.len()].chars().count();
+        rest = after;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn toks(s: &str) -> Vec<Tok> {
+        let mut v = Vec::new();
+        lex_line(s, 1, 1, &mut v);
+        v.into_iter().map(|t| t.tok).collect()
+    }
+
+    #[test]
+    fn numbers_in_every_spelling() {
+        let expect = [
+            ("1", 1.0, true),
+            ("-2.", -2.0, false),
+            (".5", 0.5, false),
+            ("1.07E6", 1.07e6, false),
+            ("0.25E-3", 0.25e-3, false),
+            ("1E6", 1e6, false),
+            ("+3.0D2", 300.0, false),
+        ];
+        for (s, v, int) in expect {
+            match &toks(s)[..] {
+                [Tok::Number { value, integer, .. }] => {
+                    assert_eq!(*value, v, "{s}");
+                    assert_eq!(*integer, int, "{s}");
+                }
+                other => panic!("{s}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn assignment_with_repeat_and_logical() {
+        assert_eq!(
+            toks(" $VTSCHR CLALPA(1)=2*0.141, VERTUP=.TRUE.$"),
+            vec![
+                Tok::Open("VTSCHR".into()),
+                Tok::Name("CLALPA".into()),
+                Tok::LParen,
+                Tok::Number {
+                    value: 1.0,
+                    integer: true,
+                    text: "1".into()
+                },
+                Tok::RParen,
+                Tok::Equals,
+                Tok::Number {
+                    value: 2.0,
+                    integer: true,
+                    text: "2".into()
+                },
+                Tok::Star,
+                Tok::Number {
+                    value: 0.141,
+                    integer: false,
+                    text: "0.141".into()
+                },
+                Tok::Comma,
+                Tok::Name("VERTUP".into()),
+                Tok::Equals,
+                Tok::Logical(true),
+                Tok::Close,
+            ]
+        );
+    }
+
+    #[test]
+    fn columns_count_characters() {
+        let mut v = Vec::new();
+        lex_line("\tA = 1", 7, 1, &mut v);
+        let cols: Vec<usize> = v.iter().map(|t| t.column).collect();
+        assert_eq!(cols, vec![2, 4, 6]);
+    }
+
+    #[test]
+    fn garbage_is_one_character_at_a_time() {
+        assert_eq!(
+            toks("@1"),
+            vec![
+                Tok::Other('@'),
+                Tok::Number {
+                    value: 1.0,
+                    integer: true,
+                    text: "1".into()
+                }
+            ]
+        );
+    }
+}

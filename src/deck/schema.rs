@@ -1,0 +1,184 @@
+//! The namelists Digital DATCOM accepts: each variable's kind, array length, count variable and
+//! physical unit.
+//!
+//! The table is data (`schema.tsv`, embedded at build time), taken from the declarations and
+//! namelist-emulator name tables of the original program (routines CONERR/NAMER and the COMMON
+//! blocks they fill); the unit column is ours, used to convert at the edge under DIM FT/IN/M/CM.
+
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// Value kind of a namelist variable.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Kind {
+    Real,
+    Integer,
+    Logical,
+}
+
+/// Physical dimension of a variable, for unit conversion at the edge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Dimension {
+    /// Dimensionless, angles (degrees), counts, flags, chord or span fractions.
+    None,
+    Length,
+    Area,
+    /// Per unit length (Reynolds number per length).
+    PerLength,
+    Velocity,
+    Pressure,
+    Temperature,
+    /// Weight or force.
+    Force,
+}
+
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct VarSpec {
+    pub name: String,
+    pub kind: Kind,
+    /// Array length; 1 for scalars.
+    pub len: usize,
+    /// The variable that says how many values the array holds (`NALPHA` for `ALSCHD`).
+    pub count: Option<String>,
+    pub dimension: Dimension,
+}
+
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct NamelistSpec {
+    pub name: String,
+    pub vars: BTreeMap<String, VarSpec>,
+}
+
+impl NamelistSpec {
+    pub fn var(&self, name: &str) -> Option<&VarSpec> {
+        self.vars.get(name)
+    }
+}
+
+const SCHEMA_TSV: &str = include_str!("schema.tsv");
+
+fn parse_kind(s: &str) -> Kind {
+    match s {
+        "integer" => Kind::Integer,
+        "logical" => Kind::Logical,
+        _ => Kind::Real,
+    }
+}
+
+fn parse_dimension(s: &str) -> Dimension {
+    match s {
+        "length" => Dimension::Length,
+        "area" => Dimension::Area,
+        "per_length" => Dimension::PerLength,
+        "velocity" => Dimension::Velocity,
+        "pressure" => Dimension::Pressure,
+        "temperature" => Dimension::Temperature,
+        "force" => Dimension::Force,
+        _ => Dimension::None,
+    }
+}
+
+fn load() -> BTreeMap<String, NamelistSpec> {
+    let mut out: BTreeMap<String, NamelistSpec> = BTreeMap::new();
+    for line in SCHEMA_TSV.lines().skip(1) {
+        let f: Vec<&str> = line.split('\t').collect();
+        if f.len() < 6 || f[0].starts_with('#') {
+            continue;
+        }
+        let spec = VarSpec {
+            name: f[1].to_string(),
+            kind: parse_kind(f[2]),
+            len: f[3].parse().unwrap_or(1),
+            count: (!f[4].is_empty()).then(|| f[4].to_string()),
+            dimension: parse_dimension(f[5]),
+        };
+        out.entry(f[0].to_string())
+            .or_insert_with(|| NamelistSpec {
+                name: f[0].to_string(),
+                vars: BTreeMap::new(),
+            })
+            .vars
+            .insert(spec.name.clone(), spec);
+    }
+    out
+}
+
+/// Every namelist of Digital DATCOM, by name.
+pub fn namelists() -> &'static BTreeMap<String, NamelistSpec> {
+    static SCHEMA: OnceLock<BTreeMap<String, NamelistSpec>> = OnceLock::new();
+    SCHEMA.get_or_init(load)
+}
+
+/// The namelist called `name` (upper case), if Digital DATCOM has one. The experimental-data
+/// namelists `EXPR01`, `EXPR02`, ... (one per Mach number) share the schema `EXPRnn`.
+pub fn namelist(name: &str) -> Option<&'static NamelistSpec> {
+    let key = match name.strip_prefix("EXPR") {
+        Some(nn) if nn.len() == 2 && nn.chars().all(|c| c.is_ascii_digit()) => "EXPRnn",
+        _ => name,
+    };
+    namelists().get(key)
+}
+
+/// Namelists of Missile DATCOM that Digital DATCOM does not have: their presence marks a deck
+/// written for the other program.
+pub const MISSILE_NAMELISTS: &[&str] = &[
+    "REFQ", "AXIBOD", "ELLBOD", "FINSET1", "FINSET2", "FINSET3", "FINSET4", "PROTUB", "INLET",
+    "DEFLCT", "INERTIA", "SYMCS",
+];
+
+/// Edit distance, for "did you mean" hints.
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// The candidate nearest to `word`, when it is near enough to be a plausible typo.
+pub fn nearest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let limit = (word.len() / 3).max(1);
+    candidates
+        .into_iter()
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|(d, _)| *d <= limit)
+        .min_by_key(|(d, c)| (*d, *c))
+        .map(|(_, c)| c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn typo_hint() {
+        let wg = namelist("WGPLNF").unwrap();
+        assert_eq!(
+            nearest("DHDAHI", wg.vars.keys().map(String::as_str)),
+            Some("DHDADI")
+        );
+    }
+
+    #[test]
+    fn known_sizes() {
+        let f = namelist("FLTCON").unwrap();
+        assert_eq!(f.var("ALSCHD").unwrap().len, 20);
+        assert_eq!(f.var("ALSCHD").unwrap().count.as_deref(), Some("NALPHA"));
+        assert_eq!(f.var("MACH").unwrap().len, 20);
+        let b = namelist("BODY").unwrap();
+        assert_eq!(b.var("X").unwrap().len, 20);
+        assert_eq!(b.var("X").unwrap().dimension, Dimension::Length);
+        assert_eq!(
+            namelist("SYNTHS").unwrap().var("VERTUP").unwrap().kind,
+            Kind::Logical
+        );
+    }
+}

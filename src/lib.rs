@@ -1,0 +1,47 @@
+//! # datcom
+//!
+//! USAF Digital DATCOM stability and control derivatives, in Rust.
+//!
+//! Data flows one way: deck text → [`deck`] (namelists and control cards, every problem a
+//! [`Diagnostic`]) → [`case`] (typed cases, SI units inside) → [`conditions`] (flight conditions
+//! from the 1962 US Standard Atmosphere) → [`results`] → [`report`] (text, JSON, CSV).
+//!
+//! ```
+//! let deck = datcom::read_deck(" $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0$\n", "x.dcm");
+//! assert!(!deck.has_errors());
+//! let results = datcom::run(&deck);
+//! assert_eq!(results.cases[0].conditions.len(), 1);
+//! ```
+
+pub mod atmosphere;
+pub mod case;
+pub mod conditions;
+pub mod deck;
+pub mod error;
+pub mod report;
+pub mod results;
+
+pub use case::{Case, Deck};
+pub use error::{DeckProblem, Diagnostic, Error, Severity};
+pub use results::{CaseResults, ConditionResults, Results};
+
+/// Reads a deck from text; `file` names it in diagnostics. Never fails: every problem is a
+/// diagnostic in the returned deck.
+pub fn read_deck(text: &str, file: &str) -> Deck {
+    Deck::from_raw(deck::read(text, file))
+}
+
+/// Reads a deck from a file.
+pub fn read_deck_file(path: &std::path::Path) -> Result<Deck, Error> {
+    let bytes = std::fs::read(path).map_err(|source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let text = String::from_utf8_lossy(&bytes);
+    Ok(read_deck(&text, &path.display().to_string()))
+}
+
+/// Computes every case of a deck.
+pub fn run(deck: &Deck) -> Results {
+    results::run(deck)
+}

@@ -1,0 +1,180 @@
+//! `datcom-rs`: a thin command line over the `datcom` library.
+//!
+//! Exit codes: 0 success; 1 the deck has errors (or a case could not be computed); 2 usage or
+//! file errors.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+#[derive(Parser)]
+#[command(
+    name = "datcom-rs",
+    version,
+    about = "USAF Digital DATCOM stability and control derivatives",
+    long_about = "Reads Digital DATCOM input decks (namelists and control cards), checks them, \
+                  and computes flight conditions and (as methods arrive) aerodynamic coefficients."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum ParseFormat {
+    Json,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum RunFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Check decks and print every problem (exit 0 clean or warnings only, 1 if errors).
+    Check {
+        /// Deck files.
+        #[arg(required = true)]
+        decks: Vec<PathBuf>,
+        /// Print notes too (dialect accepted here that the original rejects).
+        #[arg(long)]
+        notes: bool,
+    },
+    /// Print the typed cases of a deck.
+    Parse {
+        deck: PathBuf,
+        #[arg(long, value_enum, default_value = "json")]
+        format: ParseFormat,
+    },
+    /// Run a deck: flight conditions and coefficients.
+    Run {
+        deck: PathBuf,
+        #[arg(long, value_enum, default_value = "text")]
+        format: RunFormat,
+        /// Write the output to DIR/<deck name>.<txt|json|csv> instead of standard output.
+        #[arg(short = 'o', long = "output", value_name = "DIR")]
+        output: Option<PathBuf>,
+    },
+}
+
+fn print_diagnostics(deck: &datcom::Deck, notes: bool, out: &mut dyn Write) {
+    for d in &deck.diagnostics {
+        if notes || d.severity != datcom::Severity::Note {
+            let _ = writeln!(out, "{d}");
+        }
+    }
+}
+
+fn load(path: &Path) -> Result<datcom::Deck, ExitCode> {
+    datcom::read_deck_file(path).map_err(|e| {
+        eprintln!("datcom-rs: {e}");
+        ExitCode::from(2)
+    })
+}
+
+fn check(decks: &[PathBuf], notes: bool) -> ExitCode {
+    let mut worst = 0u8;
+    for path in decks {
+        let deck = match load(path) {
+            Ok(d) => d,
+            Err(code) => return code,
+        };
+        print_diagnostics(&deck, notes, &mut std::io::stdout().lock());
+        let (e, w) = (deck.error_count(), deck.warning_count());
+        println!(
+            "{}: {} case(s), {e} error(s), {w} warning(s)",
+            path.display(),
+            deck.cases.len()
+        );
+        if e > 0 {
+            worst = 1;
+        }
+    }
+    ExitCode::from(worst)
+}
+
+fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
+    match output {
+        None => {
+            let mut out = std::io::stdout().lock();
+            if out.write_all(text.as_bytes()).is_err() {
+                return ExitCode::from(2);
+            }
+            ExitCode::SUCCESS
+        }
+        Some(dir) => {
+            let stem = deck
+                .file_stem()
+                .map_or("deck".into(), |s| s.to_string_lossy());
+            let path = dir.join(format!("{stem}.{ext}"));
+            if let Err(e) = std::fs::create_dir_all(dir).and_then(|()| std::fs::write(&path, text))
+            {
+                eprintln!("datcom-rs: cannot write {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+            eprintln!("wrote {}", path.display());
+            ExitCode::SUCCESS
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Check { decks, notes } => check(&decks, notes),
+        Command::Parse { deck, format } => {
+            let d = match load(&deck) {
+                Ok(d) => d,
+                Err(code) => return code,
+            };
+            print_diagnostics(&d, false, &mut std::io::stderr().lock());
+            match format {
+                ParseFormat::Json => match serde_json::to_string_pretty(&d) {
+                    Ok(s) => {
+                        println!("{s}");
+                        ExitCode::from(u8::from(d.has_errors()))
+                    }
+                    Err(e) => {
+                        eprintln!("datcom-rs: {e}");
+                        ExitCode::from(2)
+                    }
+                },
+            }
+        }
+        Command::Run {
+            deck,
+            format,
+            output,
+        } => {
+            let d = match load(&deck) {
+                Ok(d) => d,
+                Err(code) => return code,
+            };
+            print_diagnostics(&d, false, &mut std::io::stderr().lock());
+            if d.has_errors() {
+                eprintln!(
+                    "datcom-rs: {} has {} error(s); cases with errors are computed as far as they can be",
+                    deck.display(),
+                    d.error_count()
+                );
+            }
+            let results = datcom::run(&d);
+            let (text, ext) = match format {
+                RunFormat::Text => (datcom::report::text::to_string(&results), "txt"),
+                RunFormat::Json => (datcom::report::json::to_string(&results), "json"),
+                RunFormat::Csv => (datcom::report::csv::to_string(&results), "csv"),
+            };
+            let code = emit(&text, &deck, ext, output.as_deref());
+            if code == ExitCode::SUCCESS && d.has_errors() {
+                ExitCode::from(1)
+            } else {
+                code
+            }
+        }
+    }
+}

@@ -1,0 +1,199 @@
+//! The JSON of `datcom-rs run --format json`, in the deck's units (documented in
+//! docs/output.md). Field names are a contract with users' scripts: keep them.
+
+use serde::Serialize;
+
+use super::{condition_view, derivative_view, reference_view};
+use crate::deck::cards::DerivUnit;
+use crate::results::{CaseResults, ConditionResults, Results};
+
+#[derive(Serialize)]
+pub struct StaticJson {
+    pub alpha: Vec<f64>,
+    #[serde(rename = "CD")]
+    pub cd: Vec<Option<f64>>,
+    #[serde(rename = "CL")]
+    pub cl: Vec<Option<f64>>,
+    #[serde(rename = "CM")]
+    pub cm: Vec<Option<f64>>,
+    #[serde(rename = "CN")]
+    pub cn: Vec<Option<f64>>,
+    #[serde(rename = "CA")]
+    pub ca: Vec<Option<f64>>,
+    #[serde(rename = "XCP")]
+    pub xcp: Vec<Option<f64>>,
+    #[serde(rename = "CLA")]
+    pub cla: Vec<Option<f64>>,
+    #[serde(rename = "CMA")]
+    pub cma: Vec<Option<f64>>,
+    #[serde(rename = "CYB")]
+    pub cyb: Vec<Option<f64>>,
+    #[serde(rename = "CNB")]
+    pub cnb: Vec<Option<f64>>,
+    #[serde(rename = "CLB")]
+    pub clb: Vec<Option<f64>>,
+}
+
+#[derive(Serialize)]
+pub struct DynamicJson {
+    pub alpha: Vec<f64>,
+    #[serde(rename = "CLQ")]
+    pub clq: Vec<Option<f64>>,
+    #[serde(rename = "CMQ")]
+    pub cmq: Vec<Option<f64>>,
+    #[serde(rename = "CLAD")]
+    pub clad: Vec<Option<f64>>,
+    #[serde(rename = "CMAD")]
+    pub cmad: Vec<Option<f64>>,
+    #[serde(rename = "CLP")]
+    pub clp: Vec<Option<f64>>,
+    #[serde(rename = "CYP")]
+    pub cyp: Vec<Option<f64>>,
+    #[serde(rename = "CNP")]
+    pub cnp: Vec<Option<f64>>,
+    #[serde(rename = "CNR")]
+    pub cnr: Vec<Option<f64>>,
+    #[serde(rename = "CLR")]
+    pub clr: Vec<Option<f64>>,
+}
+
+#[derive(Serialize)]
+pub struct ConditionJson {
+    pub mach: f64,
+    pub altitude: Option<f64>,
+    pub velocity: Option<f64>,
+    pub pressure: Option<f64>,
+    pub temperature: Option<f64>,
+    pub reynolds_per_length: f64,
+    pub configuration: String,
+    pub deriv_unit: DerivUnit,
+    #[serde(rename = "static")]
+    pub static_coefficients: StaticJson,
+    pub dynamic: Option<DynamicJson>,
+}
+
+#[derive(Serialize)]
+pub struct ReferenceJson {
+    pub area: Option<f64>,
+    pub longitudinal: Option<f64>,
+    pub lateral: Option<f64>,
+    pub xcg: f64,
+    pub zcg: f64,
+}
+
+#[derive(Serialize)]
+pub struct UnitsJson {
+    pub length: &'static str,
+    pub velocity: &'static str,
+    pub pressure: &'static str,
+    pub temperature: &'static str,
+    pub reynolds_per_length: &'static str,
+    pub area: &'static str,
+}
+
+#[derive(Serialize)]
+pub struct CaseJson {
+    pub case: usize,
+    pub caseid: Option<String>,
+    pub units: UnitsJson,
+    pub reference: ReferenceJson,
+    pub conditions: Vec<ConditionJson>,
+    pub warnings: Vec<String>,
+}
+
+#[derive(Serialize)]
+pub struct ResultsJson {
+    pub file: String,
+    pub cases: Vec<CaseJson>,
+}
+
+fn d(v: &[Option<f64>], unit: DerivUnit) -> Vec<Option<f64>> {
+    v.iter().map(|x| derivative_view(*x, unit)).collect()
+}
+
+fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
+    let v = condition_view(c, case.dim);
+    let u = case.deriv;
+    let s = &c.static_coefficients;
+    ConditionJson {
+        mach: v.mach,
+        altitude: v.altitude,
+        velocity: v.velocity,
+        pressure: v.pressure,
+        temperature: v.temperature,
+        reynolds_per_length: v.reynolds_per_length,
+        configuration: c.configuration.clone(),
+        deriv_unit: u,
+        static_coefficients: StaticJson {
+            alpha: c.alpha_deg.clone(),
+            cd: s.cd.clone(),
+            cl: s.cl.clone(),
+            cm: s.cm.clone(),
+            cn: s.cn.clone(),
+            ca: s.ca.clone(),
+            xcp: s.xcp.clone(),
+            cla: d(&s.cla, u),
+            cma: d(&s.cma, u),
+            cyb: d(&s.cyb, u),
+            cnb: d(&s.cnb, u),
+            clb: d(&s.clb, u),
+        },
+        dynamic: c.dynamic.as_ref().map(|y| DynamicJson {
+            alpha: c.alpha_deg.clone(),
+            clq: d(&y.clq, u),
+            cmq: d(&y.cmq, u),
+            clad: d(&y.clad, u),
+            cmad: d(&y.cmad, u),
+            clp: d(&y.clp, u),
+            cyp: d(&y.cyp, u),
+            cnp: d(&y.cnp, u),
+            cnr: d(&y.cnr, u),
+            clr: d(&y.clr, u),
+        }),
+    }
+}
+
+/// The serialisable view of a deck's results.
+pub fn view(results: &Results) -> ResultsJson {
+    use crate::case::units::unit_label;
+    use crate::deck::schema::Dimension as D;
+    ResultsJson {
+        file: results.file.clone(),
+        cases: results
+            .cases
+            .iter()
+            .map(|c| {
+                let (area, longitudinal, lateral, xcg, zcg) = reference_view(c);
+                CaseJson {
+                    case: c.number,
+                    caseid: c.caseid.clone(),
+                    units: UnitsJson {
+                        length: unit_label(c.dim, D::Length),
+                        velocity: unit_label(c.dim, D::Velocity),
+                        pressure: unit_label(c.dim, D::Pressure),
+                        temperature: unit_label(c.dim, D::Temperature),
+                        reynolds_per_length: unit_label(c.dim, D::PerLength),
+                        area: unit_label(c.dim, D::Area),
+                    },
+                    reference: ReferenceJson {
+                        area,
+                        longitudinal,
+                        lateral,
+                        xcg,
+                        zcg,
+                    },
+                    conditions: c.conditions.iter().map(|k| condition(k, c)).collect(),
+                    warnings: c.warnings.clone(),
+                }
+            })
+            .collect(),
+    }
+}
+
+/// Pretty JSON text of a deck's results.
+pub fn to_string(results: &Results) -> String {
+    // Serialising plain structs of numbers and strings cannot fail; non-finite numbers become
+    // null, and the library does not produce them (see the no-NaN tests).
+    serde_json::to_string_pretty(&view(results))
+        .unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+}

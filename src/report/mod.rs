@@ -1,0 +1,64 @@
+//! Reports: results in the deck's units, as text, JSON or CSV; and reading the original
+//! program's listings ([`legacy`]).
+//!
+//! This is the output edge: SI and per-radian values inside become the deck's units (DIM) and
+//! per degree unless DERIV RAD here, and nowhere else.
+
+pub mod csv;
+pub mod json;
+pub mod legacy;
+pub mod text;
+
+use crate::case::units::from_si;
+use crate::deck::cards::{DerivUnit, Dim};
+use crate::deck::schema::Dimension;
+use crate::results::{CaseResults, ConditionResults};
+
+/// A flight condition in the deck's units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConditionView {
+    pub mach: f64,
+    pub altitude: Option<f64>,
+    pub velocity: Option<f64>,
+    pub pressure: Option<f64>,
+    pub temperature: Option<f64>,
+    pub reynolds_per_length: f64,
+}
+
+/// Converts a condition to the deck's units.
+pub fn condition_view(c: &ConditionResults, dim: Dim) -> ConditionView {
+    let f = &c.condition;
+    ConditionView {
+        mach: f.mach,
+        altitude: f.altitude.map(|v| from_si(v, dim, Dimension::Length)),
+        velocity: f.velocity.map(|v| from_si(v, dim, Dimension::Velocity)),
+        pressure: f.pressure.map(|v| from_si(v, dim, Dimension::Pressure)),
+        temperature: f
+            .temperature
+            .map(|v| from_si(v, dim, Dimension::Temperature)),
+        reynolds_per_length: from_si(f.reynolds_per_length, dim, Dimension::PerLength),
+    }
+}
+
+/// Reference dimensions in the deck's units (geometry divided back by SCALE):
+/// (area, longitudinal length, lateral length, XCG, ZCG).
+pub fn reference_view(c: &CaseResults) -> (Option<f64>, Option<f64>, Option<f64>, f64, f64) {
+    let s = c.scale;
+    let len = |v: f64| from_si(v, c.dim, Dimension::Length) / s;
+    let r = &c.reference;
+    (
+        r.area.map(|a| from_si(a, c.dim, Dimension::Area) / (s * s)),
+        r.chord.map(len),
+        r.span.map(len),
+        len(r.xcg),
+        len(r.zcg),
+    )
+}
+
+/// A derivative per radian in the unit the case asks for.
+pub fn derivative_view(per_rad: Option<f64>, unit: DerivUnit) -> Option<f64> {
+    per_rad.map(|v| match unit {
+        DerivUnit::Rad => v,
+        DerivUnit::Deg => v * std::f64::consts::PI / 180.0,
+    })
+}

@@ -1,0 +1,179 @@
+//! Text report: for each case and flight condition, the FLIGHT CONDITIONS and REFERENCE
+//! DIMENSIONS block in the original's column layout, then the coefficient table.
+
+use std::fmt::Write;
+
+use super::{condition_view, derivative_view, reference_view};
+use crate::case::units::unit_label;
+use crate::deck::cards::DerivUnit;
+use crate::deck::schema::Dimension as D;
+use crate::results::{CaseResults, ConditionResults, Results};
+
+/// Fortran `1PEw.d`: one digit before the point, `d` after, exponent with sign and two digits.
+pub fn fortran_e(v: f64, d: usize, w: usize) -> String {
+    if v == 0.0 {
+        return format!("{:>w$}", format!("{:.d$}E+00", 0.0));
+    }
+    let s = format!("{:.*E}", d, v);
+    let (mant, exp) = s.split_once('E').unwrap_or((&s, "0"));
+    let e: i32 = exp.parse().unwrap_or(0);
+    let sign = if e < 0 { '-' } else { '+' };
+    format!("{:>w$}", format!("{mant}E{sign}{:02}", e.abs()))
+}
+
+/// Fortran `Fw.d`, right-aligned; `******` when it does not fit, as the original prints.
+pub fn fortran_f(v: f64, d: usize, w: usize) -> String {
+    let s = format!("{v:>w$.d$}");
+    if s.len() > w {
+        "*".repeat(w)
+    } else {
+        s
+    }
+}
+
+fn opt_f(v: Option<f64>, d: usize, w: usize) -> String {
+    v.map_or_else(|| " ".repeat(w), |x| fortran_f(x, d, w))
+}
+
+fn opt_e(v: Option<f64>, w: usize) -> String {
+    v.map_or_else(|| " ".repeat(w), |x| fortran_e(x, 4, w))
+}
+
+/// The FLIGHT CONDITIONS / REFERENCE DIMENSIONS block for one condition.
+pub fn flight_conditions_block(case: &CaseResults, c: &ConditionResults) -> String {
+    let dim = case.dim;
+    let v = condition_view(c, dim);
+    let (area, long, lat, xcg, zcg) = reference_view(case);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        " -----------------------  FLIGHT CONDITIONS  ------------------------           --------------  REFERENCE DIMENSIONS  ------------"
+    );
+    let _ = writeln!(
+        s,
+        "  MACH    ALTITUDE   VELOCITY    PRESSURE    TEMPERATURE     REYNOLDS             REF.      REFERENCE LENGTH   MOMENT REF. CENTER"
+    );
+    let _ = writeln!(
+        s,
+        " NUMBER                                                       NUMBER              AREA       LONG.     LAT.     HORIZ      VERT"
+    );
+    let _ = writeln!(
+        s,
+        "            {:>3}       {:>6}     {:>8}       {:>5}         {:>4}               {:>5}        {:>2}        {:>2}        {:>2}        {:>2}",
+        unit_label(dim, D::Length),
+        unit_label(dim, D::Velocity),
+        unit_label(dim, D::Pressure),
+        unit_label(dim, D::Temperature),
+        unit_label(dim, D::PerLength),
+        unit_label(dim, D::Area),
+        unit_label(dim, D::Length),
+        unit_label(dim, D::Length),
+        unit_label(dim, D::Length),
+        unit_label(dim, D::Length),
+    );
+    let _ = writeln!(
+        s,
+        "0{}   {}   {}  {}   {}    {}         {}  {}  {}  {}  {}",
+        fortran_f(v.mach, 3, 6),
+        opt_f(v.altitude, 2, 8),
+        opt_f(v.velocity, 2, 8),
+        opt_e(v.pressure, 10),
+        opt_f(v.temperature, 3, 9),
+        fortran_e(v.reynolds_per_length, 4, 10),
+        opt_f(area, 3, 9),
+        opt_f(long, 3, 8),
+        opt_f(lat, 3, 8),
+        fortran_f(xcg, 3, 8),
+        fortran_f(zcg, 3, 8),
+    );
+    s
+}
+
+fn table(case: &CaseResults, c: &ConditionResults) -> String {
+    let unit = case.deriv;
+    let per = match unit {
+        DerivUnit::Deg => "PER DEGREE",
+        DerivUnit::Rad => "PER RADIAN",
+    };
+    let mut s = String::new();
+    let _ = writeln!(s, "0{:>80}", format!("DERIVATIVE ({per})"));
+    let _ = writeln!(
+        s,
+        "0 ALPHA     CD       CL       CM       CN       CA       XCP        CLA          CMA          CYB          CNB          CLB"
+    );
+    let st = &c.static_coefficients;
+    let cell = |v: Option<f64>, w: usize, d: usize| {
+        v.map_or_else(|| format!("{:>w$}", ""), |x| fortran_f(x, d, w))
+    };
+    let ecell = |v: Option<f64>| v.map_or_else(|| format!("{:>13}", ""), |x| fortran_e(x, 3, 13));
+    for (i, a) in c.alpha_deg.iter().enumerate() {
+        let at = |col: &Vec<Option<f64>>| col.get(i).copied().flatten();
+        let dv = |col: &Vec<Option<f64>>| derivative_view(at(col), unit);
+        let _ = writeln!(
+            s,
+            " {}{}{}{}{}{}{}{}{}{}{}{}",
+            fortran_f(*a, 1, 7),
+            cell(at(&st.cd), 9, 3),
+            cell(at(&st.cl), 9, 3),
+            cell(at(&st.cm), 9, 4),
+            cell(at(&st.cn), 9, 3),
+            cell(at(&st.ca), 9, 3),
+            cell(at(&st.xcp), 9, 3),
+            ecell(dv(&st.cla)),
+            ecell(dv(&st.cma)),
+            ecell(dv(&st.cyb)),
+            ecell(dv(&st.cnb)),
+            ecell(dv(&st.clb)),
+        );
+    }
+    let computed = [&st.cd, &st.cl, &st.cm, &st.cla]
+        .iter()
+        .any(|col| col.iter().any(Option::is_some));
+    if !computed {
+        let _ = writeln!(
+            s,
+            "  (coefficients not computed yet: the component methods arrive in later versions)"
+        );
+    }
+    s
+}
+
+/// The whole text report.
+pub fn to_string(results: &Results) -> String {
+    let mut s = String::new();
+    for case in &results.cases {
+        for c in &case.conditions {
+            let _ = writeln!(
+                s,
+                "1         AUTOMATED STABILITY AND CONTROL METHODS PER APRIL 1976 VERSION OF DATCOM (datcom-rs)"
+            );
+            let _ = writeln!(
+                s,
+                "{:^120}",
+                "CHARACTERISTICS AT ANGLE OF ATTACK AND IN SIDESLIP"
+            );
+            let _ = writeln!(s, "{:^120}", c.configuration);
+            let _ = writeln!(s, "{:^120}", case.caseid.as_deref().unwrap_or(""));
+            s.push_str(&flight_conditions_block(case, c));
+            s.push_str(&table(case, c));
+            s.push('\n');
+        }
+        for w in &case.warnings {
+            let _ = writeln!(s, " warning (case {}): {w}", case.number);
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fortran_formats() {
+        assert_eq!(fortran_e(1967.62, 4, 10), "1.9676E+03");
+        assert_eq!(fortran_e(-0.0006870, 3, 10), "-6.870E-04");
+        assert_eq!(fortran_f(0.158, 3, 6), " 0.158");
+        assert_eq!(fortran_f(123456.0, 3, 6), "******");
+    }
+}

@@ -1,0 +1,268 @@
+//! Results of running a deck: per case, per flight condition, the configuration computed and
+//! its coefficients against angle of attack. Everything is SI and per radian inside; reports
+//! convert to the deck's units and to per degree unless DERIV RAD.
+
+use crate::case::{Case, Deck, Planform};
+use crate::conditions::{self, FlightCondition};
+use crate::deck::cards::{DerivUnit, Dim};
+
+/// Static coefficients against angle of attack (columns of the original's static page).
+/// Derivatives are per radian. `None` where there is no value.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StaticCoefficients {
+    pub cd: Vec<Option<f64>>,
+    pub cl: Vec<Option<f64>>,
+    pub cm: Vec<Option<f64>>,
+    pub cn: Vec<Option<f64>>,
+    pub ca: Vec<Option<f64>>,
+    pub xcp: Vec<Option<f64>>,
+    pub cla: Vec<Option<f64>>,
+    pub cma: Vec<Option<f64>>,
+    pub cyb: Vec<Option<f64>>,
+    pub cnb: Vec<Option<f64>>,
+    pub clb: Vec<Option<f64>>,
+}
+
+/// Dynamic derivatives against angle of attack (DAMP), per radian.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DynamicDerivatives {
+    pub clq: Vec<Option<f64>>,
+    pub cmq: Vec<Option<f64>>,
+    pub clad: Vec<Option<f64>>,
+    pub cmad: Vec<Option<f64>>,
+    pub clp: Vec<Option<f64>>,
+    pub cyp: Vec<Option<f64>>,
+    pub cnp: Vec<Option<f64>>,
+    pub cnr: Vec<Option<f64>>,
+    pub clr: Vec<Option<f64>>,
+}
+
+fn nones(n: usize) -> Vec<Option<f64>> {
+    vec![None; n]
+}
+
+impl StaticCoefficients {
+    /// No value computed yet at any of `n` angles.
+    pub fn empty(n: usize) -> Self {
+        Self {
+            cd: nones(n),
+            cl: nones(n),
+            cm: nones(n),
+            cn: nones(n),
+            ca: nones(n),
+            xcp: nones(n),
+            cla: nones(n),
+            cma: nones(n),
+            cyb: nones(n),
+            cnb: nones(n),
+            clb: nones(n),
+        }
+    }
+}
+
+impl DynamicDerivatives {
+    pub fn empty(n: usize) -> Self {
+        Self {
+            clq: nones(n),
+            cmq: nones(n),
+            clad: nones(n),
+            cmad: nones(n),
+            clp: nones(n),
+            cyp: nones(n),
+            cnp: nones(n),
+            cnr: nones(n),
+            clr: nones(n),
+        }
+    }
+}
+
+/// Reference dimensions and moment reference centre of a case, SI.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ReferenceDimensions {
+    pub area: Option<f64>,
+    pub chord: Option<f64>,
+    pub span: Option<f64>,
+    pub xcg: f64,
+    pub zcg: f64,
+}
+
+/// One flight condition's results.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConditionResults {
+    pub condition: FlightCondition,
+    /// Configuration name as the original prints it (`WING-BODY CONFIGURATION`, ...).
+    pub configuration: String,
+    pub alpha_deg: Vec<f64>,
+    pub static_coefficients: StaticCoefficients,
+    /// Present when the case has DAMP.
+    pub dynamic: Option<DynamicDerivatives>,
+}
+
+/// One case's results.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseResults {
+    pub number: usize,
+    pub caseid: Option<String>,
+    pub dim: Dim,
+    pub deriv: DerivUnit,
+    /// SYNTHS SCALE: the geometry inside is the deck's times this factor.
+    pub scale: f64,
+    pub reference: ReferenceDimensions,
+    pub conditions: Vec<ConditionResults>,
+    pub warnings: Vec<String>,
+}
+
+/// Results of every case of a deck.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Results {
+    pub file: String,
+    pub cases: Vec<CaseResults>,
+}
+
+/// Theoretical area (both halves, to the centreline) and area-weighted mean aerodynamic chord of
+/// a straight-tapered or cranked planform: the reference area and length the original uses
+/// when $OPTINS does not give them (DATCOM section 2.2.2, trapezoidal panels).
+pub fn planform_area_and_mac(p: &Planform) -> Option<(f64, f64)> {
+    let root = p.chrdr?;
+    let span = p.sspn?;
+    let tip = p.chrdtp.unwrap_or(0.0);
+    let (break_chord, break_span) = match (p.chrdbp, p.sspnop) {
+        (Some(c), Some(outer)) if outer > 0.0 => (c, outer),
+        _ => (tip, 0.0),
+    };
+    let inner_span = span - break_span;
+    let inner_area = (root + break_chord) * inner_span;
+    let outer_area = (break_chord + tip) * break_span;
+    let area = inner_area + outer_area;
+    let mac = |c_root: f64, c_tip: f64| {
+        if c_root + c_tip == 0.0 {
+            return 0.0;
+        }
+        let l = c_tip / c_root;
+        2.0 * c_root * (1.0 + l + l * l) / (3.0 * (1.0 + l))
+    };
+    if area <= 0.0 || root <= 0.0 {
+        return None;
+    }
+    let mac = (inner_area * mac(root, break_chord) + outer_area * mac(break_chord, tip)) / area;
+    Some((area, mac))
+}
+
+/// Configuration name as the original prints it, from the components present.
+pub fn configuration_name(case: &Case) -> String {
+    let body = case.body.is_some();
+    let wing = case.wing.is_some();
+    let mut parts: Vec<&str> = Vec::new();
+    if wing {
+        parts.push("WING");
+    }
+    if body {
+        parts.push("BODY");
+    }
+    let ht = case.horizontal_tail.is_some();
+    let vt = case.vertical_tail.is_some();
+    let vf = case.ventral_fin.is_some();
+    if vf {
+        if ht {
+            parts.push("HORIZONTAL TAIL");
+        }
+        if vt {
+            parts.push("VERTICAL TAIL");
+        }
+        parts.push("VENTRAL FIN");
+    } else {
+        if vt {
+            parts.push("VERTICAL TAIL");
+        }
+        if ht {
+            parts.push("HORIZONTAL TAIL");
+        }
+    }
+    match parts.as_slice() {
+        [] => "NO COMPONENT".to_string(),
+        [one] => format!("{one} ALONE CONFIGURATION"),
+        _ => format!("{} CONFIGURATION", parts.join("-")),
+    }
+}
+
+/// Reference dimensions: $OPTINS, else the wing's theoretical area, mean aerodynamic chord and
+/// span; $LARWB's SREF, L and XCG replace them when given (as in the original).
+fn reference(case: &Case) -> ReferenceDimensions {
+    let from_wing = case.wing.as_ref().and_then(planform_area_and_mac);
+    let synth = case.synthesis.as_ref();
+    if let Some(lb) = &case.larwb {
+        return ReferenceDimensions {
+            area: lb.sref,
+            chord: lb.length,
+            span: case.reference.span,
+            xcg: lb.xcg.unwrap_or(0.0),
+            zcg: synth.and_then(|s| s.zcg).unwrap_or(0.0),
+        };
+    }
+    ReferenceDimensions {
+        area: case.reference.area.or(from_wing.map(|w| w.0)),
+        chord: case.reference.chord.or(from_wing.map(|w| w.1)),
+        span: case
+            .reference
+            .span
+            .or_else(|| case.wing.as_ref().and_then(|w| w.sspn).map(|s| 2.0 * s)),
+        xcg: synth.and_then(|s| s.xcg).unwrap_or(0.0),
+        zcg: synth.and_then(|s| s.zcg).unwrap_or(0.0),
+    }
+}
+
+/// Runs one case.
+pub fn run_case(case: &Case) -> CaseResults {
+    let mut warnings = Vec::new();
+    let mut conditions = Vec::new();
+    if let Some(f) = &case.flight {
+        let (conds, mut w) = conditions::flight_conditions(f);
+        warnings.append(&mut w);
+        let n = f.alpha_deg.len();
+        for c in conds {
+            conditions.push(ConditionResults {
+                condition: c,
+                configuration: configuration_name(case),
+                alpha_deg: f.alpha_deg.clone(),
+                static_coefficients: StaticCoefficients::empty(n),
+                dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
+            });
+        }
+    }
+    CaseResults {
+        number: case.number,
+        caseid: case.caseid.clone(),
+        dim: case.dim,
+        deriv: case.deriv,
+        scale: case.scale,
+        reference: reference(case),
+        conditions,
+        warnings,
+    }
+}
+
+/// Runs every case of a deck.
+pub fn run(deck: &Deck) -> Results {
+    Results {
+        file: deck.file.clone(),
+        cases: deck.cases.iter().map(run_case).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mac_of_a_rectangle_is_its_chord() {
+        let p = Planform {
+            chrdr: Some(2.0),
+            chrdtp: Some(2.0),
+            sspn: Some(5.0),
+            ..Planform::default()
+        };
+        let (area, mac) = planform_area_and_mac(&p).unwrap();
+        assert!((area - 20.0).abs() < 1e-12);
+        assert!((mac - 2.0).abs() < 1e-12);
+    }
+}
