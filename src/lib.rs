@@ -7,10 +7,15 @@
 //! from the 1962 US Standard Atmosphere) → [`results`] → [`report`] (text, JSON, CSV).
 //!
 //! ```
-//! let deck = datcom::read_deck(" $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0$\n", "x.dcm");
-//! assert!(!deck.has_errors());
+//! let text = " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0,
+//!    NALPHA=2.0, ALSCHD(1)=0.0,4.0$
+//!  $SYNTHS XCG=1.0$
+//! ";
+//! let deck = datcom::read_deck(text, "x.dcm");
+//! assert!(!deck.has_errors(), "{:?}", deck.diagnostics);
 //! let results = datcom::run(&deck);
-//! assert_eq!(results.cases[0].conditions.len(), 1);
+//! let sea_level = &results.cases[0].conditions[0].condition;
+//! assert!((sea_level.temperature.unwrap() - 288.15).abs() < 1e-9);
 //! ```
 
 pub mod atmosphere;

@@ -175,7 +175,7 @@ pub const KEYWORDS: &[&str] = &[
 fn parse_naca(upper: &str, line: usize) -> Card {
     let rest = upper[4..].trim_start_matches([' ', '-']);
     // Surface letter, series, designation: separated by `-` or blanks.
-    let mut parts = rest.splitn(3, |c: char| c == '-' || c == ' ' || c == '\t');
+    let mut parts = rest.splitn(3, ['-', ' ', '\t']);
     let surface = parts.next().unwrap_or("");
     let series = parts.next().unwrap_or("").trim();
     let designation: String = parts

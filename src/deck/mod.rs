@@ -199,8 +199,7 @@ impl<'a> Reader<'a> {
     fn diag(
         &mut self,
         severity: Severity,
-        line: usize,
-        column: usize,
+        (line, column): (usize, usize),
         card: Option<&str>,
         variable: Option<&str>,
         problem: DeckProblem,
@@ -221,8 +220,7 @@ impl<'a> Reader<'a> {
     fn note_dialect(&mut self, line: usize, column: usize, what: &str) {
         self.diag(
             Severity::Note,
-            line,
-            column,
+            (line, column),
             None,
             None,
             DeckProblem::Dialect { what: what.into() },
@@ -252,8 +250,7 @@ impl<'a> Reader<'a> {
             let n = lines.len();
             self.diag(
                 Severity::Error,
-                open.line,
-                open.column,
+                (open.line, open.column),
                 Some(&open.name),
                 None,
                 DeckProblem::UnterminatedNamelist {
@@ -323,6 +320,19 @@ impl<'a> Reader<'a> {
             let col = text.chars().count() + 1;
             self.note_dialect(n, col, "a trailing `!` comment");
         }
+        if raw.starts_with(['$', '&']) {
+            self.note_dialect(
+                n,
+                1,
+                "a namelist starting in column 1 (the original needs column 1 blank)",
+            );
+        }
+        if !is_caseid && text.chars().any(|c| c.is_ascii_lowercase()) {
+            let col = text
+                .find(|c: char| c.is_ascii_lowercase())
+                .map_or(1, |c| text[..c].chars().count() + 1);
+            self.note_dialect(n, col, "lower case (the original reads upper case only)");
+        }
         if raw.contains('\t') {
             let col = raw.find('\t').map_or(1, |c| raw[..c].chars().count() + 1);
             self.note_dialect(n, col, "a TAB character");
@@ -332,8 +342,7 @@ impl<'a> Reader<'a> {
             let card = self.open.as_ref().map(|o| o.name.clone());
             self.diag(
                 Severity::Warning,
-                n,
-                CARD_COLUMNS + 1,
+                (n, CARD_COLUMNS + 1),
                 card.as_deref(),
                 None,
                 DeckProblem::PastColumn80 {
@@ -379,8 +388,7 @@ impl<'a> Reader<'a> {
             }
             self.diag(
                 Severity::Error,
-                open.line,
-                open.column,
+                (open.line, open.column),
                 Some(&open.name),
                 None,
                 DeckProblem::UnterminatedNamelist {
@@ -416,8 +424,7 @@ impl<'a> Reader<'a> {
                     if let Some(open) = self.open.take() {
                         self.diag(
                             Severity::Error,
-                            open.line,
-                            open.column,
+                            (open.line, open.column),
                             Some(&open.name),
                             None,
                             DeckProblem::UnterminatedNamelist {
@@ -457,8 +464,7 @@ impl<'a> Reader<'a> {
                 let (l, c) = (first.line, first.column);
                 self.diag(
                     Severity::Warning,
-                    l,
-                    c,
+                    (l, c),
                     None,
                     None,
                     DeckProblem::TrailingText {
@@ -487,8 +493,7 @@ impl<'a> Reader<'a> {
                 .map(|n| format!("did you mean ${n}?"));
             self.diag(
                 Severity::Error,
-                line,
-                column,
+                (line, column),
                 Some(&name),
                 None,
                 DeckProblem::UnknownNamelist {
@@ -515,8 +520,7 @@ impl<'a> Reader<'a> {
                 Some(Tok::Open(_)) => self.feed_outside(toks),
                 _ => self.diag(
                     Severity::Warning,
-                    n,
-                    col,
+                    (n, col),
                     None,
                     None,
                     DeckProblem::TrailingText {
@@ -537,19 +541,11 @@ impl<'a> Reader<'a> {
                     .collect();
                 let rest = upper[word.len()..].trim_start();
                 if !word.is_empty() && (rest.starts_with('=') || rest.starts_with('(')) {
-                    let home = schema::namelists()
-                        .values()
-                        .find(|s| s.var(&word).is_some())
-                        .map(|s| {
-                            format!(
-                                "{word} belongs in ${}; put it between `${}` and `$`",
-                                s.name, s.name
-                            )
-                        });
+                    let home = schema::homes(&word)
+                        .map(|h| format!("{word} belongs in {h}: put it inside that namelist"));
                     self.diag(
                         Severity::Error,
-                        n,
-                        col,
+                        (n, col),
                         None,
                         Some(&word),
                         DeckProblem::AssignmentOutsideNamelist {
@@ -562,8 +558,7 @@ impl<'a> Reader<'a> {
                         .map(|k| format!("did you mean {k}?"));
                     self.diag(
                         Severity::Error,
-                        n,
-                        col,
+                        (n, col),
                         None,
                         None,
                         DeckProblem::UnknownCard {
@@ -599,8 +594,7 @@ impl<'a> Reader<'a> {
                 c.write.push(s);
                 self.diag(
                     Severity::Note,
-                    n,
-                    col,
+                    (n, col),
                     Some("WRITE"),
                     None,
                     DeckProblem::Dialect {
@@ -615,8 +609,7 @@ impl<'a> Reader<'a> {
             }
             Card::Bad(card, expected, found) => self.diag(
                 Severity::Error,
-                n,
-                col,
+                (n, col),
                 Some(&card),
                 None,
                 DeckProblem::BadCard {
@@ -637,8 +630,7 @@ impl<'a> Reader<'a> {
         if !self.seen.insert(open.name.clone()) {
             self.diag(
                 Severity::Note,
-                open.line,
-                open.column,
+                (open.line, open.column),
                 Some(&open.name),
                 None,
                 DeckProblem::NamelistRepeated {
@@ -656,10 +648,7 @@ impl<'a> Reader<'a> {
         };
         if let Some(rival) = rival {
             if self.case.namelists.remove(rival).is_some() {
-                self.diag(
-                    Severity::Warning,
-                    open.line,
-                    open.column,
+                self.diag(Severity::Warning, (open.line, open.column),
                     Some(&open.name),
                     None,
                     DeckProblem::Case {
@@ -676,8 +665,7 @@ impl<'a> Reader<'a> {
         for p in problems {
             self.diag(
                 Severity::Error,
-                p.line,
-                p.column,
+                (p.line, p.column),
                 Some(&open.name),
                 p.variable.as_deref(),
                 p.problem,
@@ -696,15 +684,11 @@ impl<'a> Reader<'a> {
             let near = schema::nearest(&a.name, spec.vars.keys().map(String::as_str))
                 .map(|n| format!("did you mean {n}?"))
                 .or_else(|| {
-                    schema::namelists()
-                        .values()
-                        .find(|s| s.var(&a.name).is_some())
-                        .map(|s| format!("{} is a variable of ${}", a.name, s.name))
+                    schema::homes(&a.name).map(|h| format!("{} is a variable of {h}", a.name))
                 });
             self.diag(
                 Severity::Error,
-                a.line,
-                a.column,
+                (a.line, a.column),
                 Some(nl),
                 Some(&a.name),
                 DeckProblem::UnknownVariable {
@@ -720,8 +704,7 @@ impl<'a> Reader<'a> {
         if last > var.len {
             self.diag(
                 Severity::Error,
-                a.line,
-                a.column,
+                (a.line, a.column),
                 Some(nl),
                 Some(&a.name),
                 DeckProblem::TooManyValues {
@@ -753,8 +736,7 @@ impl<'a> Reader<'a> {
             };
             self.diag(
                 Severity::Error,
-                a.line,
-                a.column,
+                (a.line, a.column),
                 Some(nl),
                 Some(&a.name),
                 DeckProblem::WrongKind {
@@ -771,8 +753,7 @@ impl<'a> Reader<'a> {
         if reassigned {
             self.diag(
                 Severity::Warning,
-                a.line,
-                a.column,
+                (a.line, a.column),
                 Some(nl),
                 Some(&a.name),
                 DeckProblem::Reassigned {
@@ -876,7 +857,7 @@ impl<'a> Reader<'a> {
                 DeckProblem::CountMismatch { .. } => Severity::Warning,
                 _ => Severity::Error,
             };
-            self.diag(severity, line, 0, Some(&nl), Some(&var), problem, hint);
+            self.diag(severity, (line, 0), Some(&nl), Some(&var), problem, hint);
         }
     }
 

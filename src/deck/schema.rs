@@ -128,6 +128,16 @@ pub const MISSILE_NAMELISTS: &[&str] = &[
     "DEFLCT", "INERTIA", "SYMCS",
 ];
 
+/// The namelists that have a variable called `var`, as `$NAME` joined by commas.
+pub fn homes(var: &str) -> Option<String> {
+    let v: Vec<String> = namelists()
+        .values()
+        .filter(|s| s.var(var).is_some())
+        .map(|s| format!("${}", s.name))
+        .collect();
+    (!v.is_empty()).then(|| v.join(", "))
+}
+
 /// Edit distance, for "did you mean" hints.
 pub fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();

@@ -1,0 +1,339 @@
+//! The deck dialect we accept and the diagnostics we give, one behaviour per test.
+
+use datcom::deck::{self, Value};
+use datcom::{DeckProblem, Severity};
+
+const MINIMAL: &str =
+    " $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=2.0, ALSCHD(1)=0.0,2.0$\n $SYNTHS XCG=1.0$\n";
+
+fn read(text: &str) -> datcom::Deck {
+    datcom::read_deck(text, "t.dcm")
+}
+
+fn errors(d: &datcom::Deck) -> Vec<&datcom::Diagnostic> {
+    d.diagnostics.iter().filter(|x| x.is_error()).collect()
+}
+
+fn numbers(raw: &deck::RawCase, nl: &str, var: &str) -> Vec<Option<f64>> {
+    match raw.namelists[nl].get(var) {
+        Some(Value::Numbers(v)) => v.clone(),
+        other => panic!("{nl}.{var}: {other:?}"),
+    }
+}
+
+#[test]
+fn unknown_variable_gets_the_nearest_name() {
+    let d = read(&format!(
+        "{MINIMAL} $WGPLNF CHRDR=2.0, SSPN=5.0, DHDAHI=3.0$\nNACA-W-4-0012\n"
+    ));
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{e:?}");
+    let e = e[0];
+    assert_eq!((e.line, e.column), (3, 31));
+    assert_eq!(e.card.as_deref(), Some("WGPLNF"));
+    assert_eq!(e.variable.as_deref(), Some("DHDAHI"));
+    assert_eq!(e.hint.as_deref(), Some("did you mean DHDADI?"));
+    assert_eq!(
+        e.to_string(),
+        "t.dcm:3:31: error [WGPLNF DHDAHI]: unknown variable DHDAHI in $WGPLNF (hint: did you mean DHDADI?)"
+    );
+}
+
+#[test]
+fn variable_of_another_namelist_is_named() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.4, XCG=3.0$\n");
+    let e = errors(&d);
+    assert!(
+        e.iter()
+            .any(|e| e.hint.as_deref() == Some("XCG is a variable of $LARWB, $SYNTHS")),
+        "{e:?}"
+    );
+}
+
+#[test]
+fn nalpha_beyond_the_values_given() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=11.0,\n   ALSCHD(1)=1.,2.,3.,4.,5.,6.,7.,8.,9.,10.$\n $SYNTHS XCG=1.0$\n");
+    let w: Vec<_> = d
+        .diagnostics
+        .iter()
+        .filter(|x| matches!(x.problem, DeckProblem::CountMismatch { .. }))
+        .collect();
+    assert_eq!(w.len(), 1);
+    // The original runs it and prints the 11th angle as NDM: a warning, not an error.
+    assert_eq!(w[0].severity, Severity::Warning);
+    assert!(
+        w[0].to_string()
+            .contains("NALPHA=11 but ALSCHD has 10 values"),
+        "{}",
+        w[0]
+    );
+    assert_eq!(d.cases[0].flight.as_ref().unwrap().alpha_deg.len(), 10);
+}
+
+#[test]
+fn unterminated_namelist_names_what_it_swallows() {
+    let text = " $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=1.0, XW=1.2\nNACA-W-4-0012\nCASEID X\n $BODY NX=2.0, X(1)=0.0,1.0$\n";
+    let d = read(text);
+    let e = errors(&d);
+    let u = e
+        .iter()
+        .find(|x| matches!(x.problem, DeckProblem::UnterminatedNamelist { .. }))
+        .expect("unterminated namelist reported");
+    assert_eq!(u.line, 2);
+    match &u.problem {
+        DeckProblem::UnterminatedNamelist { swallowed, .. } => {
+            assert_eq!(
+                swallowed,
+                &vec![
+                    "NACA-W-4-0012".to_string(),
+                    "CASEID X".into(),
+                    "$BODY".into()
+                ]
+            );
+        }
+        _ => unreachable!(),
+    }
+    // Reading goes on: the NACA card, CASEID and $BODY are all read.
+    assert_eq!(d.cases[0].airfoils.len(), 1);
+    assert_eq!(d.cases[0].caseid.as_deref(), Some("X"));
+    assert!(d.cases[0].body.is_some());
+}
+
+#[test]
+fn assignment_outside_any_namelist() {
+    let d = read(&format!("{MINIMAL}  SSPN=5.0,\n"));
+    let e = errors(&d);
+    assert_eq!(e.len(), 1);
+    assert!(matches!(
+        e[0].problem,
+        DeckProblem::AssignmentOutsideNamelist { .. }
+    ));
+    assert_eq!(e[0].line, 3);
+    assert!(
+        e[0].hint.as_deref().unwrap().contains("$WGPLNF"),
+        "{}",
+        e[0]
+    );
+}
+
+#[test]
+fn missing_comma_on_one_card_is_an_error_but_a_card_end_separates() {
+    let d = read(" $FLTCON NMACH=1.0 MACH(1)=0.4, NALPHA=1.0,\n ALSCHD(1)=0.0\n LOOP=1.0$\n $SYNTHS XCG=1.0$\n");
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert!(matches!(e[0].problem, DeckProblem::MissingComma { .. }));
+    assert_eq!((e[0].line, e[0].column), (1, 20));
+    let raw = deck::read(
+        " $FLTCON NMACH=1.0 MACH(1)=0.4, NALPHA=1.0,\n ALSCHD(1)=0.0\n LOOP=1.0$\n",
+        "t",
+    );
+    assert_eq!(numbers(&raw.cases[0], "FLTCON", "LOOP"), vec![Some(1.0)]);
+    assert_eq!(numbers(&raw.cases[0], "FLTCON", "MACH"), vec![Some(0.4)]);
+}
+
+#[test]
+fn every_problem_in_one_pass() {
+    let text = " $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=1.0, ALSCHD(1)=0.0, FOO=1.0$\n $SYNTHS XCG=1.0, BAR=2.0$\nBOGUS CARD\n $BODY NX=2.0, X(1)=0.0,1.0, BAZ=3.0$\n";
+    let d = read(text);
+    let lines: Vec<usize> = errors(&d).iter().map(|e| e.line).collect();
+    assert_eq!(lines, vec![1, 2, 3, 4]);
+}
+
+#[test]
+fn dialect_of_real_decks() {
+    // Indexed and unindexed arrays, continuation, repeat counts, exponents, leading and
+    // trailing dots, integers, blanks around `=`, trailing comma, `$` alone on a line, `$NAME`
+    // alone on a line, TABs, CRLF, DATCOM+ comments, `!` comments, no final newline.
+    let text = "* a DATCOM+ comment\r\n# another\r\nDIM FT\r\n $FLTCON\r\n\tNMACH = 2, MACH = .2, 3.E-1 ,\r\n  NALPHA=3., ALSCHD(1)=-2.,\r\n  0, 2*4.0, ! trailing comment\r\n  RNNUB(1)=1.07E6,2.0E+6,\r\n$\r\n $SYNTHS XCG=1.0, VERTUP=.FALSE.$";
+    let d = read(text);
+    assert!(errors(&d).is_empty(), "{:?}", errors(&d));
+    let raw = deck::read(text, "t");
+    let c = &raw.cases[0];
+    assert_eq!(numbers(c, "FLTCON", "MACH"), vec![Some(0.2), Some(0.3)]);
+    assert_eq!(
+        numbers(c, "FLTCON", "ALSCHD"),
+        vec![Some(-2.0), Some(0.0), Some(4.0), Some(4.0)]
+    );
+    assert_eq!(
+        numbers(c, "FLTCON", "RNNUB"),
+        vec![Some(1.07e6), Some(2.0e6)]
+    );
+    assert_eq!(
+        c.namelists["SYNTHS"]["VERTUP"],
+        Value::Logicals(vec![Some(false)])
+    );
+    let f = d.cases[0].flight.as_ref().unwrap();
+    assert_eq!(
+        f.alpha_deg,
+        vec![-2.0, 0.0, 4.0],
+        "NALPHA=3 limits the angles used"
+    );
+    let notes: Vec<String> = d
+        .diagnostics
+        .iter()
+        .filter(|x| x.severity == Severity::Note)
+        .map(|x| x.problem.to_string())
+        .collect();
+    for what in ["DATCOM+ comment card", "TAB", "`!` comment"] {
+        assert!(
+            notes.iter().any(|n| n.contains(what)),
+            "note for {what}: {notes:?}"
+        );
+    }
+}
+
+#[test]
+fn same_key_twice_last_wins_with_a_warning() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.4, MACH(1)=0.5, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=1.0$\n");
+    assert_eq!(d.cases[0].flight.as_ref().unwrap().mach, vec![0.5]);
+    let w: Vec<_> = d
+        .diagnostics
+        .iter()
+        .filter(|x| x.severity == Severity::Warning)
+        .collect();
+    assert_eq!(w.len(), 1);
+    assert!(matches!(w[0].problem, DeckProblem::Reassigned { .. }));
+}
+
+#[test]
+fn same_namelist_twice_merges() {
+    let raw = deck::read(
+        " $BODY NX=3.0, X(1)=0.0,1.0,2.0$\n $BODY X(2)=1.5, R(1)=0.1,0.2,0.1$\n",
+        "t",
+    );
+    let c = &raw.cases[0];
+    assert_eq!(
+        numbers(c, "BODY", "X"),
+        vec![Some(0.0), Some(1.5), Some(2.0)]
+    );
+    assert_eq!(numbers(c, "BODY", "NX"), vec![Some(3.0)]);
+    assert_eq!(numbers(c, "BODY", "R").len(), 3);
+}
+
+#[test]
+fn save_carries_namelists_and_naca_cards_not_other_cards() {
+    let text = "DIM M\nDERIV RAD\nDAMP\nCASEID ONE\n $FLTCON NMACH=1.0, MACH(1)=0.4$\nNACA-W-4-0012\nSAVE\nNEXT CASE\n $SYNTHS XCG=1.0$\nNEXT CASE\n $FLTCON NMACH=1.0, MACH(1)=0.5$\n";
+    let raw = deck::read(text, "t");
+    assert_eq!(raw.cases.len(), 3);
+    let (a, b, c) = (&raw.cases[0], &raw.cases[1], &raw.cases[2]);
+    assert!(a.save && a.cards.damp);
+    assert_eq!(b.namelists.keys().collect::<Vec<_>>(), ["FLTCON", "SYNTHS"]);
+    assert_eq!(b.airfoils.len(), 1, "NACA cards are carried by SAVE");
+    assert_eq!(b.caseid, None, "CASEID is not carried");
+    assert!(!b.cards.damp, "DAMP is not carried");
+    assert_eq!(
+        b.cards.dim,
+        Some(datcom::deck::cards::Dim::M),
+        "DIM persists"
+    );
+    assert_eq!(
+        b.cards.deriv,
+        Some(datcom::deck::cards::DerivUnit::Rad),
+        "DERIV persists"
+    );
+    // Case 2 had no SAVE: case 3 starts afresh (but DIM and DERIV persist).
+    assert_eq!(c.namelists.keys().collect::<Vec<_>>(), ["FLTCON"]);
+    assert!(c.airfoils.is_empty());
+    assert_eq!(c.cards.dim, Some(datcom::deck::cards::Dim::M));
+}
+
+#[test]
+fn data_past_column_80_is_read_with_a_warning() {
+    let line = format!(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4,{}NALPHA=1.0, ALSCHD(1)=0.0$",
+        " ".repeat(50)
+    );
+    let d = read(&format!("{line}\n $SYNTHS XCG=1.0$\n"));
+    let w: Vec<_> = d
+        .diagnostics
+        .iter()
+        .filter(|x| matches!(x.problem, DeckProblem::PastColumn80 { .. }))
+        .collect();
+    assert_eq!(w.len(), 1);
+    assert_eq!(
+        (w[0].line, w[0].column, w[0].severity),
+        (1, 81, Severity::Warning)
+    );
+    assert_eq!(d.cases[0].flight.as_ref().unwrap().alpha_deg, vec![0.0]);
+}
+
+#[test]
+fn naca_cards_in_dash_and_blank_forms() {
+    let d = read(&format!("{MINIMAL}NACA-W-6-643-618\nNACA H 4 0012\n"));
+    let a = &d.cases[0].airfoils;
+    assert_eq!(a.len(), 2);
+    assert_eq!(a[0].designation, "643-618");
+    assert_eq!(a[1].designation, "0012");
+}
+
+#[test]
+fn units_are_converted_at_the_edge() {
+    let d = read("DIM IN\n $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=12.0$\n $OPTINS SREF=144.0$\n");
+    let c = &d.cases[0];
+    assert!((c.synthesis.as_ref().unwrap().xcg.unwrap() - 0.3048).abs() < 1e-12);
+    assert!((c.reference.area.unwrap() - 0.3048 * 0.3048).abs() < 1e-12);
+}
+
+#[test]
+fn physical_checks() {
+    let d = read(&format!(
+        "{MINIMAL} $WGPLNF CHRDR=-2.0, SSPN=5.0, SSPNE=6.0$\nNACA-W-4-0012\n $BODY NX=3.0, X(1)=0.0,2.0,1.0, R(1)=0.1,-0.2,0.1$\n"
+    ));
+    let msgs: Vec<String> = errors(&d).iter().map(|e| e.problem.to_string()).collect();
+    for want in [
+        "CHRDR must be positive",
+        "SSPNE is larger than the semi-span",
+        "X(3)=1 is less than X(2)=2",
+        "R has a negative value",
+    ] {
+        assert!(msgs.iter().any(|m| m.contains(want)), "{want}: {msgs:?}");
+    }
+}
+
+#[test]
+fn neither_mach_nor_velocity() {
+    let d = read(" $FLTCON NALPHA=1.0, ALSCHD(1)=0.0, NALT=1.0, ALT(1)=0.0$\n $SYNTHS XCG=1.0$\n");
+    assert!(errors(&d)
+        .iter()
+        .any(|e| e.problem.to_string().contains("neither MACH nor VINF")));
+}
+
+#[test]
+fn velocity_and_altitude_without_mach_does_not_hang() {
+    // The original loops forever on this deck (VINF and ALT, no MACH, an airfoil card).
+    let d = read(" $FLTCON NMACH=1.0, VINF(1)=200.0, NALT=1.0, ALT(1)=1000.0, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=1.0$\n $WGPLNF CHRDR=2.0, SSPN=5.0, SSPNE=4.0, CHRDTP=1.0$\nNACA-W-4-0012\n");
+    assert!(errors(&d).is_empty(), "{:?}", errors(&d));
+    let r = datcom::run(&d);
+    let c = &r.cases[0].conditions[0].condition;
+    // 200 ft/s at 1000 ft: a = 49.01685·sqrt(514.69 °R) = 1112.0 ft/s.
+    assert!((c.mach - 200.0 / 1112.0).abs() < 5e-4, "{}", c.mach);
+}
+
+#[test]
+fn missile_datcom_is_refused() {
+    let d = read("CASEID X\n$FLTCON NALPHA=1., MACH=2.0$\n$REFQ XCG=1.0$\n$AXIBOD LNOSE=1.0$\n");
+    assert_eq!(d.diagnostics.len(), 1);
+    assert!(d.diagnostics[0].to_string().contains("Missile DATCOM"));
+}
+
+#[test]
+fn broken_input_never_panics() {
+    for text in [
+        "",
+        "$",
+        " $",
+        " $FLTCON",
+        "$$$$",
+        "NACA",
+        "NACA-",
+        "DIM",
+        "X(",
+        " $BODY X(0)=1$",
+        " $BODY X(99)=1$",
+        " $BODY X(1)=999999*1$",
+        "\u{0}\u{1}",
+        " $FLTCON MACH=1e999$",
+    ] {
+        let _ = datcom::run(&read(text));
+    }
+}
