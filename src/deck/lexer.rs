@@ -84,6 +84,13 @@ fn open_or_close(i: &str) -> IResult<&str, Tok> {
 }
 
 fn logical(i: &str) -> IResult<&str, Tok> {
+    let b = i.as_bytes();
+    if b.len() < 3 || b[0] != b'.' || !b[1].is_ascii_alphabetic() {
+        return Err(nom::Err::Error(nom::error::Error::new(
+            i,
+            nom::error::ErrorKind::Tag,
+        )));
+    }
     let (rest, word) = alt((
         tag_no_case(".TRUE."),
         tag_no_case(".FALSE."),

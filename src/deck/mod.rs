@@ -139,7 +139,7 @@ struct Reader<'a> {
     cases: Vec<RawCase>,
     case: RawCase,
     /// Elements assigned in the current case (namelist, variable, index), for "assigned twice".
-    assigned: BTreeSet<(String, String, usize)>,
+    assigned: BTreeSet<(&'static str, &'static str, usize)>,
     /// Namelists that appeared in the current case.
     seen: BTreeSet<String>,
     open: Option<Open>,
@@ -678,7 +678,7 @@ impl<'a> Reader<'a> {
         }
     }
 
-    fn assign(&mut self, spec: &NamelistSpec, a: &namelist::Assignment) {
+    fn assign(&mut self, spec: &'static NamelistSpec, a: &namelist::Assignment) {
         let nl = spec.name.as_str();
         let Some(var) = spec.var(&a.name) else {
             let near = schema::nearest(&a.name, spec.vars.keys().map(String::as_str))
@@ -749,7 +749,7 @@ impl<'a> Reader<'a> {
             return;
         }
         let reassigned = (start..=last.min(var.len))
-            .any(|i| self.assigned.contains(&(nl.to_string(), a.name.clone(), i)));
+            .any(|i| self.assigned.contains(&(nl, var.name.as_str(), i)));
         if reassigned {
             self.diag(
                 Severity::Warning,
@@ -795,7 +795,7 @@ impl<'a> Reader<'a> {
             .origins
             .insert(format!("{nl}.{}", a.name), (a.line, a.column));
         for i in start..=last.min(var.len) {
-            self.assigned.insert((nl.to_string(), a.name.clone(), i));
+            self.assigned.insert((nl, var.name.as_str(), i));
         }
     }
 

@@ -73,7 +73,7 @@ pub fn flight_conditions_block(case: &CaseResults, c: &ConditionResults) -> Stri
     );
     let _ = writeln!(
         s,
-        "0{}   {}   {}  {}   {}    {}         {}  {}  {}  {}  {}",
+        "0{}   {}   {}   {}   {}     {}         {}   {}  {}  {}  {}",
         fortran_f(v.mach, 3, 6),
         opt_f(v.altitude, 2, 8),
         opt_f(v.velocity, 2, 8),

@@ -1,0 +1,119 @@
+//! The command line: exit codes 0/1/2, every subcommand, output files.
+
+use std::process::Command;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_datcom-rs"))
+}
+
+fn example() -> String {
+    format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("datcom-rs-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn check_clean_deck_exits_0() {
+    let out = bin().args(["check", &example()]).output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("0 error(s)"));
+}
+
+#[test]
+fn check_deck_with_errors_exits_1_and_names_the_place() {
+    let dir = temp_dir("check");
+    let deck = dir.join("bad.dcm");
+    std::fs::write(&deck, " $FLTCON NMACH=1.0, MACH(1)=0.4$\n $SYNTHS XCG=1.0$\n $WGPLNF CHRDR=1.0, DHDAHI=2.0$\nNACA-W-4-0012\n").unwrap();
+    let out = bin()
+        .args(["check", deck.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("bad.dcm:3:21: error [WGPLNF DHDAHI]"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("did you mean DHDADI?"), "{stdout}");
+}
+
+#[test]
+fn missing_file_exits_2() {
+    let out = bin()
+        .args(["check", "/nonexistent/deck.dcm"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read"));
+}
+
+#[test]
+fn usage_error_exits_2() {
+    let out = bin().args(["run"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn run_json_and_csv_and_output_dir() {
+    let out = bin()
+        .args(["run", &example(), "--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["cases"][0]["conditions"].as_array().unwrap().len(), 4);
+
+    let dir = temp_dir("run");
+    let out = bin()
+        .args([
+            "run",
+            &example(),
+            "--format",
+            "csv",
+            "-o",
+            dir.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let csv = std::fs::read_to_string(dir.join("example-uav.csv")).unwrap();
+    assert!(csv.starts_with("case,caseid,condition"));
+}
+
+#[test]
+fn parse_prints_typed_cases() {
+    let out = bin()
+        .args(["parse", &example(), "--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let case = &v["cases"][0];
+    assert_eq!(case["dim"], "M");
+    assert!((case["wing"]["chrdr"].as_f64().unwrap() - 0.44).abs() < 1e-12);
+    assert_eq!(case["airfoils"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn help_everywhere() {
+    for args in [
+        vec!["--help"],
+        vec!["check", "--help"],
+        vec!["parse", "--help"],
+        vec!["run", "--help"],
+    ] {
+        let out = bin().args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        assert!(!out.stdout.is_empty());
+    }
+}

@@ -1,0 +1,114 @@
+//! Reports: the text report's FLIGHT CONDITIONS rows read back by the listing reader give our
+//! numbers; the JSON of `run` has the documented shape; the CSV has a row per angle.
+
+use datcom::report::legacy::{self, last_digit_unit};
+use datcom::report::{condition_view, reference_view};
+
+fn example() -> datcom::Results {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let deck = datcom::read_deck_file(&path).expect("bundled deck");
+    assert!(!deck.has_errors(), "{:?}", deck.diagnostics);
+    datcom::run(&deck)
+}
+
+#[test]
+fn text_rows_read_back_to_our_numbers() {
+    let r = example();
+    let text = datcom::report::text::to_string(&r);
+    let rows = legacy::flight_condition_rows(&text);
+    let case = &r.cases[0];
+    assert_eq!(rows.len(), case.conditions.len());
+    assert_eq!(rows.len(), 4, "2 Mach numbers x 2 altitudes");
+    let (area, long, lat, xcg, zcg) = reference_view(case);
+    for (row, c) in rows.iter().zip(&case.conditions) {
+        let v = condition_view(c, case.dim);
+        let ours = [
+            Some(v.mach),
+            v.altitude,
+            v.velocity,
+            v.pressure,
+            v.temperature,
+            Some(v.reynolds_per_length),
+            area,
+            long,
+            lat,
+            Some(xcg),
+            Some(zcg),
+        ];
+        for (((name, _, _), printed), o) in legacy::FIELDS.iter().zip(&row.fields).zip(ours) {
+            let p = printed
+                .value
+                .unwrap_or_else(|| panic!("{name} not printed: {:?}", printed.text));
+            let o = o.unwrap();
+            assert!(
+                (p - o).abs() <= 0.5 * last_digit_unit(&printed.text) * (1.0 + 1e-9),
+                "{name}: printed {} for {o}",
+                printed.text
+            );
+        }
+    }
+}
+
+#[test]
+fn json_has_the_documented_shape() {
+    let r = example();
+    let v: serde_json::Value = serde_json::from_str(&datcom::report::json::to_string(&r)).unwrap();
+    let c = &v["cases"][0];
+    assert_eq!(c["caseid"], "DATCOM-RS EXAMPLE UAV, WING-BODY-TAIL");
+    let k = &c["conditions"][0];
+    for key in [
+        "mach",
+        "altitude",
+        "velocity",
+        "pressure",
+        "temperature",
+        "reynolds_per_length",
+        "configuration",
+        "deriv_unit",
+        "static",
+        "dynamic",
+    ] {
+        assert!(k.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(k["deriv_unit"], "rad");
+    for key in [
+        "alpha", "CD", "CL", "CM", "CN", "CA", "XCP", "CLA", "CMA", "CYB", "CNB", "CLB",
+    ] {
+        assert_eq!(
+            k["static"][key].as_array().map(Vec::len),
+            Some(9),
+            "static.{key}"
+        );
+    }
+    for key in [
+        "alpha", "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
+    ] {
+        assert_eq!(
+            k["dynamic"][key].as_array().map(Vec::len),
+            Some(9),
+            "dynamic.{key}"
+        );
+    }
+    // Coefficients are not computed yet: null, never a number made up.
+    assert!(k["static"]["CL"][0].is_null());
+    // Deck units: metres and kelvins under DIM M.
+    assert_eq!(k["altitude"], 0.0);
+    assert!((k["temperature"].as_f64().unwrap() - 288.15).abs() < 1e-9);
+}
+
+#[test]
+fn csv_has_a_row_per_condition_and_angle() {
+    let r = example();
+    let csv = datcom::report::csv::to_string(&r);
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(
+        lines[0].split(',').count(),
+        datcom::report::csv::HEADER.len()
+    );
+    assert_eq!(lines.len(), 1 + 4 * 9);
+    assert!(
+        lines[1].starts_with("1,\"DATCOM-RS EXAMPLE UAV, WING-BODY-TAIL\",1,"),
+        "{}",
+        lines[1]
+    );
+}
