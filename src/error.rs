@@ -154,6 +154,30 @@ impl fmt::Display for Diagnostic {
     }
 }
 
+/// Anything that carries diagnostics: counts by severity.
+pub trait Diagnosed {
+    fn diagnostics(&self) -> &[Diagnostic];
+
+    fn error_count(&self) -> usize {
+        self.count(Severity::Error)
+    }
+
+    fn warning_count(&self) -> usize {
+        self.count(Severity::Warning)
+    }
+
+    fn count(&self, severity: Severity) -> usize {
+        self.diagnostics()
+            .iter()
+            .filter(|d| d.severity == severity)
+            .count()
+    }
+
+    fn has_errors(&self) -> bool {
+        self.error_count() > 0
+    }
+}
+
 /// Failures of the library outside deck content.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]

@@ -11,6 +11,7 @@
 //!    NALPHA=2.0, ALSCHD(1)=0.0,4.0$
 //!  $SYNTHS XCG=1.0$
 //! ";
+//! use datcom::Diagnosed;
 //! let deck = datcom::read_deck(text, "x.dcm");
 //! assert!(!deck.has_errors(), "{:?}", deck.diagnostics);
 //! let results = datcom::run(&deck);
@@ -27,7 +28,7 @@ pub mod report;
 pub mod results;
 
 pub use case::{Case, Deck};
-pub use error::{DeckProblem, Diagnostic, Error, Severity};
+pub use error::{DeckProblem, Diagnosed, Diagnostic, Error, Severity};
 pub use results::{CaseResults, ConditionResults, Results};
 
 /// Reads a deck from text; `file` names it in diagnostics. Never fails: every problem is a

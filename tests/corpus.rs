@@ -7,6 +7,7 @@
 
 mod common;
 
+use datcom::Diagnosed;
 use datcom::{DeckProblem, Severity};
 
 fn summary(name: &str, text: &str) -> String {

@@ -3,6 +3,7 @@
 
 use datcom::report::legacy::{self, last_digit_unit};
 use datcom::report::{condition_view, reference_view};
+use datcom::Diagnosed;
 
 fn example() -> datcom::Results {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");

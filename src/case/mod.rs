@@ -269,22 +269,13 @@ pub struct Deck {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+impl crate::error::Diagnosed for Deck {
+    fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
+    }
+}
+
 impl Deck {
-    pub fn error_count(&self) -> usize {
-        self.diagnostics.iter().filter(|d| d.is_error()).count()
-    }
-
-    pub fn warning_count(&self) -> usize {
-        self.diagnostics
-            .iter()
-            .filter(|d| d.severity == Severity::Warning)
-            .count()
-    }
-
-    pub fn has_errors(&self) -> bool {
-        self.error_count() > 0
-    }
-
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
     pub fn from_raw(raw: RawDeck) -> Deck {
         let mut diagnostics = raw.diagnostics;

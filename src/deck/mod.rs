@@ -108,20 +108,9 @@ pub struct RawDeck {
     pub diagnostics: Vec<Diagnostic>,
 }
 
-impl RawDeck {
-    pub fn error_count(&self) -> usize {
-        self.diagnostics.iter().filter(|d| d.is_error()).count()
-    }
-
-    pub fn warning_count(&self) -> usize {
-        self.diagnostics
-            .iter()
-            .filter(|d| d.severity == Severity::Warning)
-            .count()
-    }
-
-    pub fn has_errors(&self) -> bool {
-        self.error_count() > 0
+impl crate::error::Diagnosed for RawDeck {
+    fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
     }
 }
 
@@ -248,22 +237,8 @@ impl<'a> Reader<'a> {
         }
         if let Some(open) = self.open.take() {
             let n = lines.len();
-            self.diag(
-                Severity::Error,
-                (open.line, open.column),
-                Some(&open.name),
-                None,
-                DeckProblem::UnterminatedNamelist {
-                    namelist: open.name.clone(),
-                    opened_line: open.line,
-                    swallowed: vec!["the end of the deck".into()],
-                },
-                Some(format!(
-                    "end ${} with `$` (last line of the deck is {n})",
-                    open.name
-                )),
-            );
-            self.close(open);
+            let hint = format!("(last line of the deck is {n})");
+            self.unterminated(open, vec!["the end of the deck".into()], &hint);
         }
         self.end_case(lines.len(), true);
         RawDeck {
@@ -386,19 +361,7 @@ impl<'a> Reader<'a> {
                     break;
                 }
             }
-            self.diag(
-                Severity::Error,
-                (open.line, open.column),
-                Some(&open.name),
-                None,
-                DeckProblem::UnterminatedNamelist {
-                    namelist: open.name.clone(),
-                    opened_line: open.line,
-                    swallowed,
-                },
-                Some(format!("end ${} with `$` before line {n}", open.name)),
-            );
-            self.close(open);
+            self.unterminated(open, swallowed, &format!("before line {n}"));
             self.outside_line(n, text);
             return;
         }
@@ -422,19 +385,8 @@ impl<'a> Reader<'a> {
                 }
                 Tok::Open(ref name) if schema::namelist(name).is_some() => {
                     if let Some(open) = self.open.take() {
-                        self.diag(
-                            Severity::Error,
-                            (open.line, open.column),
-                            Some(&open.name),
-                            None,
-                            DeckProblem::UnterminatedNamelist {
-                                namelist: open.name.clone(),
-                                opened_line: open.line,
-                                swallowed: vec![format!("${name} (line {})", t.line)],
-                            },
-                            Some(format!("end ${} with `$` before ${name}", open.name)),
-                        );
-                        self.close(open);
+                        let swallowed = vec![format!("${name} (line {})", t.line)];
+                        self.unterminated(open, swallowed, &format!("before ${name}"));
                     }
                     self.start(name.clone(), t.line, t.column);
                 }
@@ -620,6 +572,23 @@ impl<'a> Reader<'a> {
                 None,
             ),
         }
+    }
+
+    /// Reports a namelist never closed by `$`, then reads what it holds.
+    fn unterminated(&mut self, open: Open, swallowed: Vec<String>, where_to_close: &str) {
+        self.diag(
+            Severity::Error,
+            (open.line, open.column),
+            Some(&open.name),
+            None,
+            DeckProblem::UnterminatedNamelist {
+                namelist: open.name.clone(),
+                opened_line: open.line,
+                swallowed,
+            },
+            Some(format!("end ${} with `$` {where_to_close}", open.name)),
+        );
+        self.close(open);
     }
 
     /// Applies a closed namelist's assignments to the current case.

@@ -74,6 +74,15 @@ impl<'a> Parser<'a> {
         });
     }
 
+    /// Reports that `expected` was wanted where the cursor's token (or the end) stands.
+    fn expected_here(&mut self, fallback: &'a Token, variable: Option<&str>, expected: String) {
+        let at = self.peek(0).unwrap_or(fallback);
+        let found = self
+            .peek(0)
+            .map_or_else(|| "end of namelist".to_string(), |t| t.tok.describe());
+        self.problem(at, variable, DeckProblem::Syntax { expected, found }, None);
+    }
+
     /// True when the tokens at `k` start an assignment: `NAME =` or `NAME (`.
     fn starts_assignment(&self, k: usize) -> bool {
         matches!(
@@ -174,16 +183,7 @@ impl<'a> Parser<'a> {
             Some(t) if t.tok == Tok::Equals => self.pos += 1,
             other => {
                 let at = other.unwrap_or(head);
-                let found = other.map_or("end of namelist".into(), |t| t.tok.describe());
-                self.problem(
-                    at,
-                    Some(name),
-                    DeckProblem::Syntax {
-                        expected: format!("`=` after {name}"),
-                        found,
-                    },
-                    None,
-                );
+                self.expected_here(at, Some(name), format!("`=` after {name}"));
                 self.recover();
                 return None;
             }
@@ -230,17 +230,10 @@ impl<'a> Parser<'a> {
             let count = *value;
             self.pos += 2;
             let Some(lit) = self.constant() else {
-                let found = self
-                    .peek(0)
-                    .map_or("end of namelist".into(), |t| t.tok.describe());
-                self.problem(
+                self.expected_here(
                     t,
                     Some(name),
-                    DeckProblem::Syntax {
-                        expected: "a constant after the repeat count `n*`".into(),
-                        found,
-                    },
-                    None,
+                    "a constant after the repeat count `n*`".to_string(),
                 );
                 return false;
             };
@@ -268,22 +261,11 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn values(&mut self, name: &str, head: &Token) -> Vec<Lit> {
+    fn values(&mut self, name: &str, head: &'a Token) -> Vec<Lit> {
         let mut out = Vec::new();
         if !self.item(name, &mut out) {
             let at = self.peek(0).unwrap_or(head);
-            let found = self
-                .peek(0)
-                .map_or("end of namelist".into(), |t| t.tok.describe());
-            self.problem(
-                at,
-                Some(name),
-                DeckProblem::Syntax {
-                    expected: format!("a value for {name}"),
-                    found,
-                },
-                None,
-            );
+            self.expected_here(at, Some(name), format!("a value for {name}"));
             self.recover();
             return out;
         }
@@ -312,16 +294,7 @@ impl<'a> Parser<'a> {
                     }
                     self.pos += 1;
                     if !self.item(name, &mut out) {
-                        let t = self.peek(0).unwrap_or(t);
-                        self.problem(
-                            t,
-                            Some(name),
-                            DeckProblem::Syntax {
-                                expected: format!("a value for {name}"),
-                                found: t.tok.describe(),
-                            },
-                            None,
-                        );
+                        self.expected_here(t, Some(name), format!("a value for {name}"));
                         self.recover();
                         return out;
                     }
@@ -332,16 +305,7 @@ impl<'a> Parser<'a> {
                         return out;
                     }
                     if !self.item(name, &mut out) {
-                        let found = t.tok.describe();
-                        self.problem(
-                            t,
-                            Some(name),
-                            DeckProblem::Syntax {
-                                expected: "`,` or the next assignment".into(),
-                                found,
-                            },
-                            None,
-                        );
+                        self.expected_here(t, Some(name), "`,` or the next assignment".to_string());
                         self.recover();
                         return out;
                     }
@@ -371,17 +335,8 @@ impl<'a> Parser<'a> {
                         self.pos += 1;
                     }
                 }
-                other => {
-                    let found = other.describe();
-                    self.problem(
-                        t,
-                        Some(name),
-                        DeckProblem::Syntax {
-                            expected: "`,` or the next assignment".into(),
-                            found,
-                        },
-                        None,
-                    );
+                _ => {
+                    self.expected_here(t, Some(name), "`,` or the next assignment".to_string());
                     self.recover();
                     return out;
                 }

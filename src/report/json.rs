@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::{condition_view, derivative_view, reference_view};
+use super::{condition_view, derivative_view, reference_view, ConditionView};
 use crate::deck::cards::DerivUnit;
 use crate::results::{CaseResults, ConditionResults, Results};
 
@@ -59,12 +59,8 @@ pub struct DynamicJson {
 
 #[derive(Serialize)]
 pub struct ConditionJson {
-    pub mach: f64,
-    pub altitude: Option<f64>,
-    pub velocity: Option<f64>,
-    pub pressure: Option<f64>,
-    pub temperature: Option<f64>,
-    pub reynolds_per_length: f64,
+    #[serde(flatten)]
+    pub condition: ConditionView,
     pub configuration: String,
     pub deriv_unit: DerivUnit,
     #[serde(rename = "static")]
@@ -112,16 +108,10 @@ fn d(v: &[Option<f64>], unit: DerivUnit) -> Vec<Option<f64>> {
 }
 
 fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
-    let v = condition_view(c, case.dim);
     let u = case.deriv;
     let s = &c.static_coefficients;
     ConditionJson {
-        mach: v.mach,
-        altitude: v.altitude,
-        velocity: v.velocity,
-        pressure: v.pressure,
-        temperature: v.temperature,
-        reynolds_per_length: v.reynolds_per_length,
+        condition: condition_view(c, case.dim),
         configuration: c.configuration.clone(),
         deriv_unit: u,
         static_coefficients: StaticJson {

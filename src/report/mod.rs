@@ -14,8 +14,8 @@ use crate::deck::cards::{DerivUnit, Dim};
 use crate::deck::schema::Dimension;
 use crate::results::{CaseResults, ConditionResults};
 
-/// A flight condition in the deck's units.
-#[derive(Debug, Clone, PartialEq)]
+/// A flight condition in the deck's units (its fields are the JSON's condition fields).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ConditionView {
     pub mach: f64,
     pub altitude: Option<f64>,
