@@ -21,6 +21,7 @@
 
 pub mod atmosphere;
 pub mod case;
+pub mod charts;
 pub mod conditions;
 pub mod deck;
 pub mod error;

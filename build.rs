@@ -1,0 +1,43 @@
+//! Embeds every chart file under charts/ in the library: writes `charts.rs` in OUT_DIR with one
+//! `include_str!` per file, so the library reads no files at run time.
+
+use std::path::{Path, PathBuf};
+
+fn collect(dir: &Path, out: &mut Vec<PathBuf>) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            collect(&p, out);
+        } else if p.extension().is_some_and(|x| x == "toml") {
+            out.push(p);
+        }
+    }
+}
+
+fn main() {
+    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets it"));
+    let charts = root.join("charts");
+    println!("cargo:rerun-if-changed=charts");
+    let mut files = Vec::new();
+    collect(&charts, &mut files);
+    files.sort();
+    let mut code = String::from("/// Every chart file: (path under charts/, contents).\npub const CHART_FILES: &[(&str, &str)] = &[\n");
+    for f in &files {
+        println!("cargo:rerun-if-changed={}", f.display());
+        let rel = f
+            .strip_prefix(&charts)
+            .unwrap_or(f)
+            .to_string_lossy()
+            .replace('\\', "/");
+        code.push_str(&format!(
+            "    ({rel:?}, include_str!({:?})),\n",
+            f.display().to_string()
+        ));
+    }
+    code.push_str("];\n");
+    let out = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets it")).join("charts.rs");
+    std::fs::write(out, code).expect("write charts.rs");
+}

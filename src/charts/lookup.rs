@@ -1,0 +1,222 @@
+//! Interpolation in a chart, as the original's table routines do it.
+
+use super::{Axis, Chart, ChartWarning, Node, Outside};
+
+/// The result of a lookup: the value (none when an axis refuses to extrapolate) and a warning
+/// for every variable that left the data.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lookup {
+    pub value: Option<f64>,
+    pub warnings: Vec<ChartWarning>,
+}
+
+/// Index of the node a query snaps to (the original's GLOOK: relative distance below `tol`,
+/// relative to the query, or to the node when the query is 0, or absolute near zero).
+fn snap(x: &[f64], a: f64, tol: f64) -> Option<usize> {
+    if tol == 0.0 {
+        return x.iter().position(|v| *v == a);
+    }
+    x.iter().position(|&xi| {
+        let mut scale = if a == 0.0 { xi } else { a };
+        if scale.abs() <= 1e-4 {
+            scale = 1.0;
+        }
+        ((a - xi) / scale).abs() < tol
+    })
+}
+
+/// The parabola through three points, at `a` (the original's QUAD).
+fn quadratic(x: [f64; 3], y: [f64; 3], a: f64) -> f64 {
+    let l0 = (a - x[1]) * (a - x[2]) / ((x[0] - x[1]) * (x[0] - x[2]));
+    let l1 = (a - x[0]) * (a - x[2]) / ((x[1] - x[0]) * (x[1] - x[2]));
+    let l2 = (a - x[0]) * (a - x[1]) / ((x[2] - x[0]) * (x[2] - x[1]));
+    y[0] * l0 + y[1] * l1 + y[2] * l2
+}
+
+struct Walk<'a> {
+    chart: &'a Chart,
+    warnings: Vec<ChartWarning>,
+}
+
+impl Walk<'_> {
+    fn warn(&mut self, axis: &Axis, value: f64, x: &[f64], action: Outside) {
+        let (min, max) = x
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(*v), hi.max(*v))
+            });
+        let w = ChartWarning {
+            chart: self.chart.id.clone(),
+            variable: axis.symbol.clone(),
+            value,
+            min,
+            max,
+            action,
+        };
+        if !self.warnings.contains(&w) {
+            self.warnings.push(w);
+        }
+    }
+
+    fn eval(&mut self, node: &Node, depth: usize, args: &[f64]) -> Option<f64> {
+        let (x, nodes) = match node {
+            Node::Value(v) => return Some(*v),
+            Node::Table { x, nodes } => (x, nodes),
+        };
+        let a = args[depth];
+        let axis = &self.chart.axes[depth];
+        if let Some(i) = snap(x, a, self.chart.node_tolerance) {
+            return self.eval(&nodes[i], depth + 1, args);
+        }
+        let n = x.len();
+        let ascending = x[n - 1] > x[0];
+        // Node indices ordered by increasing x.
+        let idx = |k: usize| if ascending { k } else { n - 1 - k };
+        let (lo, hi) = (x[idx(0)], x[idx(n - 1)]);
+        if a > lo && a < hi {
+            let k = (0..n - 1).find(|&k| a <= x[idx(k + 1)]).unwrap_or(n - 2);
+            let (i, j) = (idx(k), idx(k + 1));
+            let y0 = self.eval(&nodes[i], depth + 1, args)?;
+            let y1 = self.eval(&nodes[j], depth + 1, args)?;
+            return Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0));
+        }
+        let below = a <= lo;
+        let policy = if below { axis.below } else { axis.above };
+        self.warn(axis, a, x, policy);
+        // End nodes, nearest first.
+        let end: Vec<usize> = if below {
+            (0..n.min(3)).map(idx).collect()
+        } else {
+            (0..n.min(3)).map(|k| idx(n - 1 - k)).collect()
+        };
+        match policy {
+            Outside::Refuse => None,
+            Outside::Clamp => self.eval(&nodes[end[0]], depth + 1, args),
+            Outside::Quadratic if end.len() == 3 => {
+                let mut y = [0.0; 3];
+                for (k, &i) in end.iter().enumerate() {
+                    y[k] = self.eval(&nodes[i], depth + 1, args)?;
+                }
+                Some(quadratic([x[end[0]], x[end[1]], x[end[2]]], y, a))
+            }
+            Outside::Linear | Outside::Quadratic => {
+                let (i, j) = (end[0], end[1]);
+                let y0 = self.eval(&nodes[i], depth + 1, args)?;
+                let y1 = self.eval(&nodes[j], depth + 1, args)?;
+                Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0))
+            }
+        }
+    }
+}
+
+impl Chart {
+    /// Looks the chart up at `args`, one value per axis from the outermost. A wrong number of
+    /// arguments or a non-finite argument gives no value and a warning.
+    pub fn lookup(&self, args: &[f64]) -> Lookup {
+        if args.len() != self.axes.len() || args.iter().any(|a| !a.is_finite()) {
+            return Lookup {
+                value: None,
+                warnings: vec![ChartWarning {
+                    chart: self.id.clone(),
+                    variable: self
+                        .axes
+                        .iter()
+                        .map(|a| a.symbol.as_str())
+                        .collect::<Vec<_>>()
+                        .join(","),
+                    value: args
+                        .iter()
+                        .copied()
+                        .find(|a| !a.is_finite())
+                        .unwrap_or(f64::NAN),
+                    min: f64::NAN,
+                    max: f64::NAN,
+                    action: Outside::Refuse,
+                }],
+            };
+        }
+        let mut walk = Walk {
+            chart: self,
+            warnings: Vec::new(),
+        };
+        let value = walk.eval(&self.data, 0, args).filter(|v| v.is_finite());
+        Lookup {
+            value,
+            warnings: walk.warnings,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::charts::parse_chart;
+
+    const GRID: &str = r#"
+id = "test-grid"
+title = "a 2-D test grid"
+output = { symbol = "z", name = "z", unit = "-" }
+source = { figure = "none", routine = "none", lines = "none" }
+[[axes]]
+symbol = "p"
+name = "p"
+unit = "-"
+below = "clamp"
+above = "linear"
+values = [0.0, 1.0]
+[[axes]]
+symbol = "x"
+name = "x"
+unit = "-"
+below = "refuse"
+above = "quadratic"
+values = [0.0, 1.0, 2.0]
+[data]
+"#;
+
+    fn grid() -> Chart {
+        // z = p + x² at the nodes.
+        let text = format!("{GRID}values = [0.0, 1.0, 4.0, 1.0, 2.0, 5.0]\n");
+        parse_chart(&text, "test.toml").unwrap()
+    }
+
+    #[test]
+    fn nodes_and_between() {
+        let c = grid();
+        assert_eq!(c.lookup(&[1.0, 2.0]).value, Some(5.0));
+        assert_eq!(c.lookup(&[0.5, 1.5]).value, Some(0.5 + 2.5));
+        assert!(c.lookup(&[0.5, 1.5]).warnings.is_empty());
+    }
+
+    #[test]
+    fn outside_policies() {
+        let c = grid();
+        let q = c.lookup(&[0.0, 3.0]);
+        assert_eq!(q.value, Some(9.0), "quadratic through x² is exact");
+        assert_eq!(q.warnings.len(), 1);
+        assert_eq!(q.warnings[0].variable, "x");
+        let r = c.lookup(&[0.0, -1.0]);
+        assert_eq!(r.value, None);
+        let l = c.lookup(&[2.0, 1.0]);
+        assert_eq!(l.value, Some(3.0));
+        let k = c.lookup(&[-1.0, 1.0]);
+        assert_eq!(k.value, Some(1.0));
+        assert!(k.warnings[0]
+            .to_string()
+            .contains("chart test-grid: p = -1 is outside the data (0 to 1): end value used"));
+    }
+
+    #[test]
+    fn snapping_as_glook() {
+        let c = grid();
+        // Within 0.1 % of x = 1: the node's value, not the interpolated one.
+        assert_eq!(c.lookup(&[0.0, 1.0005]).value, Some(1.0));
+    }
+
+    #[test]
+    fn bad_arguments_give_no_value() {
+        let c = grid();
+        assert_eq!(c.lookup(&[0.0]).value, None);
+        assert_eq!(c.lookup(&[f64::NAN, 0.0]).value, None);
+    }
+}

@@ -1,0 +1,161 @@
+//! Digitised DATCOM charts as interpolation tables.
+//!
+//! Each chart is a TOML file under `charts/` (embedded at build time): figure id, title, axes
+//! with symbols and units, the values, the source (DATCOM figure and the Digital DATCOM routine
+//! whose DATA statement holds the values), what a lookup does beyond the data on each side of
+//! each axis, and known defects. See `charts/README.md` for the format.
+//!
+//! Lookups behave as the original program's table routines (TLIN1X/TLINEX/TLIN3X/TLIN4X with
+//! GLOOK, and TBFUNX): linear interpolation between nodes, axis by axis from the innermost; a
+//! query within a relative 1E-3 of a node takes the node's value (GLOOK; `node_tolerance = 0`
+//! for TBFUNX tables); beyond the data, per axis and side: clamp to the end value, extrapolate
+//! linearly from the last two nodes, extrapolate quadratically through the last three, or refuse.
+//! Leaving the data is always a [`ChartWarning`] naming the chart, the variable and the value.
+
+mod lookup;
+mod parse;
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::sync::OnceLock;
+
+use serde::Serialize;
+
+pub use lookup::Lookup;
+pub use parse::{parse_chart, ChartError};
+
+include!(concat!(env!("OUT_DIR"), "/charts.rs"));
+
+/// What a lookup does beyond the data on one side of an axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Outside {
+    /// Take the end value.
+    Clamp,
+    /// Extrapolate linearly from the two end nodes.
+    Linear,
+    /// Extrapolate with the parabola through the three end nodes (the original's QUAD).
+    Quadratic,
+    /// Give no value.
+    Refuse,
+}
+
+/// An independent variable of a chart.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Axis {
+    pub symbol: String,
+    pub name: String,
+    pub unit: String,
+    pub below: Outside,
+    pub above: Outside,
+}
+
+/// The dependent variable.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Output {
+    pub symbol: String,
+    pub name: String,
+    pub unit: String,
+}
+
+/// Where the values come from.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Source {
+    /// DATCOM figure or table, e.g. `DATCOM figure 4.1.3.2-49`.
+    pub figure: String,
+    /// Digital DATCOM routine whose DATA statement holds the values.
+    pub routine: String,
+    /// Lines of that DATA statement in datcom.f (PDAS revision, January 1996).
+    pub lines: String,
+}
+
+/// Values over the axes: a node per axis value, down to numbers. A regular grid has the same
+/// x values in every branch; a family of curves has its own x values per curve.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Node {
+    Value(f64),
+    Table { x: Vec<f64>, nodes: Vec<Node> },
+}
+
+/// A digitised chart.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Chart {
+    pub id: String,
+    pub title: String,
+    /// Axes from the outermost (first lookup argument) to the innermost (last).
+    pub axes: Vec<Axis>,
+    pub output: Output,
+    pub source: Source,
+    pub notes: String,
+    pub defects: Vec<String>,
+    /// Relative distance within which a query takes a node's value.
+    pub node_tolerance: f64,
+    pub data: Node,
+    /// Path of the file under charts/.
+    pub file: String,
+}
+
+/// A lookup left the data of a chart.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChartWarning {
+    pub chart: String,
+    pub variable: String,
+    pub value: f64,
+    pub min: f64,
+    pub max: f64,
+    pub action: Outside,
+}
+
+impl fmt::Display for ChartWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let what = match self.action {
+            Outside::Clamp => "end value used",
+            Outside::Linear => "extrapolated linearly",
+            Outside::Quadratic => "extrapolated quadratically",
+            Outside::Refuse => "no value",
+        };
+        write!(
+            f,
+            "chart {}: {} = {} is outside the data ({} to {}): {what}",
+            self.chart, self.variable, self.value, self.min, self.max
+        )
+    }
+}
+
+struct Registry {
+    charts: BTreeMap<String, Chart>,
+    errors: Vec<(String, ChartError)>,
+}
+
+fn registry() -> &'static Registry {
+    static REGISTRY: OnceLock<Registry> = OnceLock::new();
+    REGISTRY.get_or_init(|| {
+        let mut charts = BTreeMap::new();
+        let mut errors = Vec::new();
+        for (file, text) in CHART_FILES {
+            match parse_chart(text, file) {
+                Ok(c) => {
+                    charts.insert(c.id.clone(), c);
+                }
+                Err(e) => errors.push((file.to_string(), e)),
+            }
+        }
+        Registry { charts, errors }
+    })
+}
+
+/// The chart with this id (`4.1.3.2-49`, ...), when it is embedded and valid.
+pub fn get(id: &str) -> Option<&'static Chart> {
+    registry().charts.get(id)
+}
+
+/// Every valid embedded chart.
+pub fn all() -> impl Iterator<Item = &'static Chart> {
+    registry().charts.values()
+}
+
+/// Embedded chart files that failed to parse or validate (a test keeps this empty).
+pub fn invalid() -> &'static [(String, ChartError)] {
+    &registry().errors
+}
