@@ -89,13 +89,30 @@ pub enum DeckProblem {
     PastColumn80 { found: String },
     #[error("{what} is accepted here; the original program rejects it")]
     Dialect { what: String },
-    #[error("text after the closing `$` ignored: `{found}`")]
+    #[error("text ignored: `{found}`")]
     TrailingText { found: String },
+    #[error("assignments after the closing `$` are outside any namelist and are lost: `{found}`")]
+    AfterClose { found: String },
     #[error("{card} {found}: expected {expected}")]
     BadCard {
         card: String,
         expected: String,
         found: String,
+    },
+    #[error("{variable}{} must {}; found {found}", index.map(|i| format!("({i})")).unwrap_or_default(), if *allow_zero { "not be negative" } else { "be positive" })]
+    NotPositive {
+        variable: String,
+        index: Option<usize>,
+        found: f64,
+        allow_zero: bool,
+    },
+    #[error("{variable} = {found} {unit} is outside {min} to {max} {unit}")]
+    OutOfRange {
+        variable: String,
+        found: f64,
+        min: f64,
+        max: f64,
+        unit: String,
     },
     #[error("{message}")]
     Physical { message: String },

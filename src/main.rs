@@ -78,25 +78,32 @@ fn load(path: &Path) -> Result<datcom::Deck, ExitCode> {
     })
 }
 
+/// Checks every deck, going on past unreadable files. Exit 2 if a file could not be read,
+/// else 1 if a deck has errors, else 0.
 fn check(decks: &[PathBuf], notes: bool) -> ExitCode {
-    let mut worst = 0u8;
+    let mut errors = false;
+    let mut unreadable = false;
+    let mut out = std::io::stdout().lock();
     for path in decks {
         let deck = match load(path) {
             Ok(d) => d,
-            Err(code) => return code,
+            Err(_) => {
+                unreadable = true;
+                continue;
+            }
         };
-        print_diagnostics(&deck, notes, &mut std::io::stdout().lock());
+        print_diagnostics(&deck, notes, &mut out);
         let (e, w) = (deck.error_count(), deck.warning_count());
-        println!(
+        // A closed pipe (`| head`) ends the output, not the program with a panic.
+        let _ = writeln!(
+            out,
             "{}: {} case(s), {e} error(s), {w} warning(s)",
             path.display(),
             deck.cases.len()
         );
-        if e > 0 {
-            worst = 1;
-        }
+        errors |= e > 0;
     }
-    ExitCode::from(worst)
+    ExitCode::from(if unreadable { 2 } else { u8::from(errors) })
 }
 
 fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
@@ -137,7 +144,7 @@ fn main() -> ExitCode {
             match format {
                 ParseFormat::Json => match serde_json::to_string_pretty(&d) {
                     Ok(s) => {
-                        println!("{s}");
+                        let _ = writeln!(std::io::stdout().lock(), "{s}");
                         ExitCode::from(u8::from(d.has_errors()))
                     }
                     Err(e) => {

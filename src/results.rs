@@ -3,7 +3,7 @@
 //! convert to the deck's units and to per degree unless DERIV RAD.
 
 use crate::case::{Case, Deck, Planform};
-use crate::conditions::{self, FlightCondition};
+use crate::conditions::FlightCondition;
 use crate::deck::cards::{DerivUnit, Dim};
 
 /// Static coefficients against angle of attack (columns of the original's static page).
@@ -216,8 +216,8 @@ pub fn run_case(case: &Case) -> CaseResults {
     let mut warnings = Vec::new();
     let mut conditions = Vec::new();
     if let Some(f) = &case.flight {
-        let (conds, mut w) = conditions::flight_conditions(f);
-        warnings.append(&mut w);
+        let conds = case.conditions.clone();
+        warnings.extend(case.condition_warnings.iter().cloned());
         let n = f.alpha_deg.len();
         for c in conds {
             conditions.push(ConditionResults {

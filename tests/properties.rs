@@ -51,9 +51,11 @@ fn namelist(name: &'static str) -> BoxedStrategy<(String, BTreeMap<String, Value
         .values()
         .filter_map(|v| v.count.as_ref().map(|c| (c.clone(), v.len)))
         .collect();
+    // Aliases (ALPHA0 for ALPHAO, ...) are the same variable as their target: left out.
     let vars: Vec<(String, Kind, usize, Option<usize>)> = spec
         .vars
         .values()
+        .filter(|v| schema::canonical(name, &v.name) == v.name)
         .map(|v| (v.name.clone(), v.kind, v.len, counts.get(&v.name).copied()))
         .collect();
     proptest::sample::subsequence(vars.clone(), 0..vars.len().min(8))
@@ -75,10 +77,21 @@ fn namelist(name: &'static str) -> BoxedStrategy<(String, BTreeMap<String, Value
 const NAMES: &[&str] = &[
     "FLTCON", "OPTINS", "SYNTHS", "BODY", "WGPLNF", "WGSCHR", "HTPLNF", "HTSCHR", "VTPLNF",
     "VTSCHR", "VFPLNF", "VFSCHR", "SYMFLP", "PROPWR", "JETPWR", "GRNDEF", "TVTPAN", "LARWB",
-    "HYPEFF", "TRNJET", "CONTAB",
+    "HYPEFF", "TRNJET", "CONTAB", "EXPR01", "EXPR02",
 ];
 
 fn airfoil() -> impl Strategy<Value = AirfoilCard> {
+    let series = prop_oneof![
+        (Just(NacaSeries::Four), "[0-9]{4}(-[0-9]{2})?"),
+        (Just(NacaSeries::Five), "[0-9]{5}"),
+        (Just(NacaSeries::One), "1[0-9]-[0-9]{3}"),
+        (Just(NacaSeries::Six), "6[3-6](,[0-9])?-[0-9]{3}"),
+        (Just(NacaSeries::Six), "6[3-6]A[0-9]{3}"),
+        (
+            Just(NacaSeries::Supersonic),
+            "[1-3]-[0-9]{2}\\.[0-9]-[0-9]\\.[0-9]"
+        ),
+    ];
     (
         prop_oneof![
             Just(Surface::Wing),
@@ -86,11 +99,11 @@ fn airfoil() -> impl Strategy<Value = AirfoilCard> {
             Just(Surface::VerticalTail),
             Just(Surface::VentralFin)
         ],
-        "[0-9]{4}",
+        series,
     )
-        .prop_map(|(surface, designation)| AirfoilCard {
+        .prop_map(|(surface, (series, designation))| AirfoilCard {
             surface,
-            series: NacaSeries::Four,
+            series,
             designation,
             line: 0,
         })
@@ -186,9 +199,31 @@ fn corpus() -> &'static [Vec<u8>] {
     })
 }
 
+/// Text the mutation test inserts: extreme numbers and stray syntax.
+const INSERTS: &[&str] = &[
+    "1.E30",
+    "-1.E300",
+    "1E400",
+    "0.0",
+    "-0.0",
+    "$",
+    "(",
+    ")",
+    "=",
+    ",",
+    "*",
+    "99999999999999999999",
+    "1E-400",
+    ".TRUE.",
+    "NEXT CASE\n",
+    "SAVE\n",
+    "\r",
+];
+
 #[derive(Debug, Clone)]
 enum Mutation {
     Flip { at: usize, byte: u8 },
+    Insert { at: usize, text: usize },
     DeleteLine(usize),
     DuplicateLine(usize),
     Truncate(usize),
@@ -197,6 +232,7 @@ enum Mutation {
 fn mutation() -> impl Strategy<Value = Mutation> {
     prop_oneof![
         (any::<usize>(), any::<u8>()).prop_map(|(at, byte)| Mutation::Flip { at, byte }),
+        (any::<usize>(), 0..INSERTS.len()).prop_map(|(at, text)| Mutation::Insert { at, text }),
         any::<usize>().prop_map(Mutation::DeleteLine),
         any::<usize>().prop_map(Mutation::DuplicateLine),
         any::<usize>().prop_map(Mutation::Truncate),
@@ -211,6 +247,11 @@ fn apply(mut bytes: Vec<u8>, m: &Mutation) -> Vec<u8> {
         Mutation::Flip { at, byte } => {
             let i = at % bytes.len();
             bytes[i] = byte;
+            bytes
+        }
+        Mutation::Insert { at, text } => {
+            let i = at % bytes.len();
+            bytes.splice(i..i, INSERTS[text].bytes());
             bytes
         }
         Mutation::Truncate(at) => {

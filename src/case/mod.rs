@@ -13,6 +13,7 @@ use std::collections::BTreeMap;
 
 use serde::Serialize;
 
+use crate::conditions;
 use crate::deck::cards::{AirfoilCard, Cards, DerivUnit, Dim, Surface};
 use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, RawDeck, Value};
@@ -23,26 +24,25 @@ struct Nl<'a> {
     name: &'a str,
     values: Option<&'a NamelistValues>,
     dim: Dim,
-    /// SYNTHS SCALE, applied to geometric lengths and areas (not to FLTCON or roughness).
+    /// SYNTHS SCALE, applied to the variables the schema marks as scaled geometry.
     scale: f64,
 }
 
 impl<'a> Nl<'a> {
-    fn dimension(&self, var: &str) -> Dimension {
-        schema::namelist(self.name)
-            .and_then(|s| s.var(var))
-            .map_or(Dimension::None, |v| v.dimension)
+    fn spec(&self, var: &str) -> Option<&'static schema::VarSpec> {
+        schema::namelist(self.name).and_then(|s| s.var(var))
     }
 
     fn to_si(&self, var: &str, x: f64) -> f64 {
-        let d = self.dimension(var);
-        let geometric = self.name != "FLTCON" && var != "ROUGFC";
-        let scale = match d {
-            Dimension::Length if geometric => self.scale,
-            Dimension::Area if geometric => self.scale * self.scale,
+        let Some(spec) = self.spec(var) else {
+            return x;
+        };
+        let scale = match spec.dimension {
+            Dimension::Length if spec.scaled => self.scale,
+            Dimension::Area if spec.scaled => self.scale * self.scale,
             _ => 1.0,
         };
-        units::to_si(x, self.dim, d) * scale
+        units::to_si(x, self.dim, spec.dimension) * scale
     }
 
     fn raw(&self, var: &str) -> Option<&'a Value> {
@@ -255,6 +255,10 @@ pub struct Case {
     pub ventral_fin: Option<Planform>,
     pub sections: BTreeMap<String, SectionInput>,
     pub larwb: Option<LowAspectRatioWingBody>,
+    /// Flight conditions of the case (computed from `flight` when the case is typed).
+    pub conditions: Vec<crate::conditions::FlightCondition>,
+    /// What was assumed or could not be computed for the flight conditions.
+    pub condition_warnings: Vec<String>,
     pub airfoils: Vec<AirfoilCard>,
     /// Namelists kept as read (deck units): flaps, power, ground effect, experimental data ...
     pub other: BTreeMap<String, NamelistValues>,
@@ -288,6 +292,7 @@ impl Deck {
                 case
             })
             .collect();
+        crate::deck::sort_diagnostics(&mut diagnostics);
         Deck {
             file: raw.file,
             cases,
@@ -394,15 +399,41 @@ fn section(n: &Nl) -> SectionInput {
     s
 }
 
-/// Collects the physical checks of one case.
+/// Collects the physical checks of one case. Messages quote the deck's own values and units.
 struct Checks<'a> {
     file: &'a str,
-    line: usize,
-    origins: &'a BTreeMap<String, (usize, usize)>,
+    raw: &'a RawCase,
     out: Vec<Diagnostic>,
 }
 
 impl Checks<'_> {
+    fn at(&self, card: &str, var: Option<&str>) -> (usize, usize) {
+        var.and_then(|v| self.raw.origins.get(&format!("{card}.{v}")))
+            .copied()
+            .unwrap_or((self.raw.first_line, 0))
+    }
+
+    fn problem(
+        &mut self,
+        severity: Severity,
+        card: &str,
+        var: Option<&str>,
+        problem: DeckProblem,
+        hint: Option<&str>,
+    ) {
+        let (line, column) = self.at(card, var);
+        self.out.push(Diagnostic {
+            severity,
+            file: self.file.to_string(),
+            line,
+            column,
+            card: Some(card.to_string()),
+            variable: var.map(str::to_string),
+            problem,
+            hint: hint.map(str::to_string),
+        });
+    }
+
     fn push(
         &mut self,
         severity: Severity,
@@ -411,36 +442,80 @@ impl Checks<'_> {
         message: String,
         hint: Option<&str>,
     ) {
-        let (line, column) = var
-            .and_then(|v| self.origins.get(&format!("{card}.{v}")))
-            .copied()
-            .unwrap_or((self.line, 0));
-        self.out.push(Diagnostic {
-            severity,
-            file: self.file.to_string(),
-            line,
-            column,
-            card: Some(card.to_string()),
-            variable: var.map(str::to_string),
-            problem: DeckProblem::Physical { message },
-            hint: hint.map(str::to_string),
-        });
+        self.problem(severity, card, var, DeckProblem::Physical { message }, hint);
     }
 
-    fn positive(&mut self, card: &str, var: &str, v: Option<f64>) {
-        if let Some(x) = v {
-            if x <= 0.0 {
-                self.push(
-                    Severity::Error,
-                    card,
-                    Some(var),
-                    format!("{var} must be positive; found {x}"),
-                    None,
-                );
-            }
+    /// The deck's values of an array (or scalar), as written, with their 1-based indices.
+    fn values(&self, card: &str, var: &str) -> Vec<(usize, f64)> {
+        self.raw
+            .namelists
+            .get(card)
+            .and_then(|n| n.get(var))
+            .and_then(Value::numbers)
+            .map(|v| {
+                v.iter()
+                    .enumerate()
+                    .filter_map(|(i, x)| x.map(|x| (i + 1, x)))
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    fn sign(&mut self, card: &str, var: &str, allow_zero: bool) {
+        let scalar = schema::namelist(card)
+            .and_then(|s| s.var(var))
+            .is_some_and(|v| v.len == 1);
+        let bad =
+            self.values(card, var)
+                .into_iter()
+                .find(|(_, x)| if allow_zero { *x < 0.0 } else { *x <= 0.0 });
+        if let Some((i, found)) = bad {
+            let problem = DeckProblem::NotPositive {
+                variable: var.to_string(),
+                index: (!scalar).then_some(i),
+                found,
+                allow_zero,
+            };
+            self.problem(Severity::Error, card, Some(var), problem, None);
+        }
+    }
+
+    fn positive(&mut self, card: &str, var: &str) {
+        self.sign(card, var, false);
+    }
+
+    fn non_negative(&mut self, card: &str, var: &str) {
+        self.sign(card, var, true);
+    }
+
+    /// Values outside `[min, max]` given in SI, reported in the deck's units.
+    fn range(&mut self, card: &str, var: &str, (min, max): (f64, f64), dim: Dim) {
+        let d = schema::namelist(card)
+            .and_then(|s| s.var(var))
+            .map_or(Dimension::None, |v| v.dimension);
+        let lo = units::from_si(min, dim, d);
+        let hi = units::from_si(max, dim, d);
+        if let Some((i, found)) = self
+            .values(card, var)
+            .into_iter()
+            .find(|(_, x)| !(lo..=hi).contains(x))
+        {
+            let problem = DeckProblem::OutOfRange {
+                variable: format!("{var}({i})"),
+                found,
+                min: lo,
+                max: hi,
+                unit: units::unit_label(dim, d).to_string(),
+            };
+            self.problem(Severity::Error, card, Some(var), problem, None);
         }
     }
 }
+
+/// Altitudes the 1962 US Standard Atmosphere tabulates, m.
+const ATMOSPHERE_RANGE_M: (f64, f64) = (-5000.0, 700_000.0);
+/// Mach numbers beyond which no DATCOM method (hypersonic ones included) applies.
+const MACH_RANGE: (f64, f64) = (0.0, 100.0);
 
 impl Case {
     /// Types one case as read; returns it with the diagnostics of its physical checks.
@@ -542,6 +617,8 @@ impl Case {
                     xcg: l.real("XCG"),
                 }
             }),
+            conditions: Vec::new(),
+            condition_warnings: Vec::new(),
             airfoils: raw.airfoils.clone(),
             other: raw
                 .namelists
@@ -553,11 +630,19 @@ impl Case {
         };
         let mut checks = Checks {
             file,
-            line: raw.first_line,
-            origins: &raw.origins,
+            raw,
             out: Vec::new(),
         };
         case.check(&mut checks);
+        let mut case = case;
+        if let Some(f) = &case.flight {
+            let (conditions, warnings) = conditions::flight_conditions(f);
+            for w in &warnings {
+                checks.push(Severity::Warning, "FLTCON", None, w.clone(), None);
+            }
+            case.conditions = conditions;
+            case.condition_warnings = warnings;
+        }
         (case, checks.out)
     }
 
@@ -644,31 +729,46 @@ impl Case {
                         Some("give NALPHA and ALSCHD(1)=..."),
                     );
                 }
-                for (i, m) in f.mach.iter().enumerate() {
-                    if *m < 0.0 {
-                        c.push(
+                c.range("FLTCON", "MACH", MACH_RANGE, self.dim);
+                c.range("FLTCON", "ALT", ATMOSPHERE_RANGE_M, self.dim);
+                c.positive("FLTCON", "VINF");
+                c.positive("FLTCON", "PINF");
+                c.positive("FLTCON", "TINF");
+                c.positive("FLTCON", "RNNUB");
+                if let Some(l) = c.raw.scalar("FLTCON", "LOOP") {
+                    if ![1.0, 2.0, 3.0].contains(&l) {
+                        c.problem(
                             Severity::Error,
                             "FLTCON",
-                            Some("MACH"),
-                            format!("MACH({}) is negative: {m}", i + 1),
-                            None,
+                            Some("LOOP"),
+                            DeckProblem::WrongKind {
+                                variable: "LOOP".into(),
+                                expected: "1.0, 2.0 or 3.0".into(),
+                                found: format!("{l}"),
+                            },
+                            Some("LOOP=1 pairs Mach i with altitude i; 2 varies Mach at each altitude; 3 varies altitude at each Mach"),
                         );
                     }
                 }
-                for v in &f.velocity {
-                    c.positive("FLTCON", "VINF", Some(*v));
-                }
-                for p in &f.pressure {
-                    c.positive("FLTCON", "PINF", Some(*p));
-                }
-                for t in &f.temperature {
-                    c.positive("FLTCON", "TINF", Some(*t));
+                if f.pressure.is_empty() != f.temperature.is_empty() {
+                    let (given, missing) = if f.pressure.is_empty() {
+                        ("TINF", "PINF")
+                    } else {
+                        ("PINF", "TINF")
+                    };
+                    c.push(
+                        Severity::Warning,
+                        "FLTCON",
+                        Some(given),
+                        format!("{given} is given without {missing}: pressure and temperature are used only together, so {given} is ignored (as in the original)"),
+                        Some("give both PINF and TINF, or ALT alone"),
+                    );
                 }
             }
         }
-        c.positive("OPTINS", "SREF", self.reference.area);
-        c.positive("OPTINS", "CBARR", self.reference.chord);
-        c.positive("OPTINS", "BLREF", self.reference.span);
+        c.positive("OPTINS", "SREF");
+        c.positive("OPTINS", "CBARR");
+        c.positive("OPTINS", "BLREF");
         for (name, p) in [
             ("WGPLNF", &self.wing),
             ("HTPLNF", &self.horizontal_tail),
@@ -676,9 +776,10 @@ impl Case {
             ("VFPLNF", &self.ventral_fin),
         ] {
             let Some(p) = p else { continue };
-            c.positive(name, "CHRDR", p.chrdr);
-            c.positive(name, "SSPN", p.sspn);
-            c.positive(name, "SSPNE", p.sspne);
+            c.positive(name, "CHRDR");
+            c.positive(name, "SSPN");
+            c.positive(name, "SSPNE");
+            c.non_negative(name, "CHRDTP");
             if p.chrdr.is_none() {
                 c.push(
                     Severity::Error,
@@ -696,17 +797,6 @@ impl Case {
                     "semi-span SSPN is not given".into(),
                     None,
                 );
-            }
-            if let Some(t) = p.chrdtp {
-                if t < 0.0 {
-                    c.push(
-                        Severity::Error,
-                        name,
-                        Some("CHRDTP"),
-                        format!("tip chord CHRDTP is negative: {t}"),
-                        None,
-                    );
-                }
             }
             if let (Some(e), Some(s)) = (p.sspne, p.sspn) {
                 if e > s * (1.0 + 1e-9) {
@@ -731,19 +821,15 @@ impl Case {
                     None,
                 );
             }
-            if let Some(i) = b.x.windows(2).position(|w| w[1] < w[0]) {
-                let shown =
-                    |k: usize| units::from_si(b.x[k], self.dim, Dimension::Length) / self.scale;
+            let x = c.values("BODY", "X");
+            if let Some(w) = x.windows(2).find(|w| w[1].1 < w[0].1) {
+                let ((i, xi), (j, xj)) = (w[0], w[1]);
                 c.push(
                     Severity::Error,
                     "BODY",
                     Some("X"),
                     format!(
-                        "body stations X must not decrease: X({})={} is less than X({})={}",
-                        i + 2,
-                        shown(i + 1),
-                        i + 1,
-                        shown(i)
+                        "body stations X must not decrease: X({j})={xj} is less than X({i})={xi}"
                     ),
                     None,
                 );
@@ -757,16 +843,8 @@ impl Case {
                     None,
                 );
             }
-            for (var, arr) in [("R", &b.r), ("S", &b.s), ("P", &b.p)] {
-                if let Some(v) = arr.iter().find(|v| **v < 0.0) {
-                    c.push(
-                        Severity::Error,
-                        "BODY",
-                        Some(var),
-                        format!("{var} has a negative value {v}"),
-                        None,
-                    );
-                }
+            for var in ["R", "S", "P"] {
+                c.non_negative("BODY", var);
             }
         }
     }

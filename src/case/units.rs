@@ -52,6 +52,13 @@ pub fn si_per_unit(dim: Dim, dimension: Dimension) -> f64 {
                 NEWTONS_PER_POUND
             }
         }
+        Dimension::Roughness => {
+            if dim.is_metric() {
+                0.01
+            } else {
+                0.0254
+            }
+        }
     }
 }
 
@@ -92,6 +99,8 @@ pub fn unit_label(dim: Dim, dimension: Dimension) -> &'static str {
         (Dim::M | Dim::Cm, D::Temperature) => "DEG K",
         (Dim::Ft | Dim::In, D::Force) => "LB",
         (Dim::M | Dim::Cm, D::Force) => "N",
+        (Dim::Ft | Dim::In, D::Roughness) => "IN",
+        (Dim::M | Dim::Cm, D::Roughness) => "CM",
     }
 }
 
@@ -111,6 +120,7 @@ mod tests {
             Dimension::Pressure,
             Dimension::Temperature,
             Dimension::Force,
+            Dimension::Roughness,
         ];
         for d in dims {
             for k in kinds {

@@ -200,11 +200,24 @@ fn parse_naca(upper: &str, line: usize) -> Card {
         "S" => NacaSeries::Supersonic,
         other => return Card::Bad("NACA".into(), "series 1, 4, 5, 6 or S".into(), other.into()),
     };
-    if designation.is_empty() {
+    // Characters each series' designation may hold (the original's DECODE reads digits, and
+    // `-`, `,`, `.`, `A` and `=` where the series has them).
+    let allowed = |c: char| match series {
+        NacaSeries::One | NacaSeries::Four | NacaSeries::Five => c.is_ascii_digit() || c == '-',
+        NacaSeries::Six => c.is_ascii_digit() || "-,.A=".contains(c),
+        NacaSeries::Supersonic => c.is_ascii_digit() || "-.".contains(c),
+    };
+    if !designation.starts_with(|c: char| c.is_ascii_digit()) || !designation.chars().all(allowed) {
+        let found = if designation.is_empty() {
+            "nothing".to_string()
+        } else {
+            designation.chars().take(30).collect()
+        };
         return Card::Bad(
             "NACA".into(),
-            "a section designation such as 0012".into(),
-            "nothing".into(),
+            "a designation such as 0012, 0012-25, 23012, 16-212, 64,3-618, 65A010 or S-1-50.0-2.5"
+                .into(),
+            found,
         );
     }
     Card::Naca(AirfoilCard {
@@ -215,56 +228,77 @@ fn parse_naca(upper: &str, line: usize) -> Card {
     })
 }
 
+/// A control card as read, with any text after what the card needs (the original compares
+/// fixed columns and ignores the rest).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParsedCard {
+    pub card: Card,
+    pub extra: Option<String>,
+}
+
 /// Reads a line as a control card; `None` when it is not one.
-pub fn parse_card(text: &str, line: usize) -> Option<Card> {
+pub fn parse_card(text: &str, line: usize) -> Option<ParsedCard> {
     let trimmed = text.trim();
     let upper = trimmed.to_ascii_uppercase();
     let words: Vec<&str> = upper.split_whitespace().collect();
     let first = *words.first()?;
+    let plain = |card: Card| ParsedCard { card, extra: None };
     if first.starts_with("NACA") && (upper.len() == 4 || upper[4..].starts_with([' ', '-', '\t'])) {
-        return Some(parse_naca(&upper, line));
+        return Some(plain(parse_naca(&upper, line)));
     }
-    if first == "CASEID" || upper.starts_with("CASEID") {
-        return Some(Card::CaseId(trimmed[6..].trim().to_string()));
+    if upper.starts_with("CASEID") {
+        return Some(plain(Card::CaseId(trimmed[6..].trim().to_string())));
     }
     let arg = |n: usize| words.get(n).copied().unwrap_or("");
-    let card = match (first, words.len()) {
-        ("NEXT", 2) if arg(1) == "CASE" => Card::NextCase,
-        ("SAVE", 1) => Card::Save,
-        ("DAMP", 1) => Card::Damp,
-        ("BUILD", 1) => Card::Build,
-        ("PART", 1) => Card::Part,
-        ("TRIM", 1) => Card::Trim,
-        ("PLOT", 1) => Card::Plot,
-        ("NAMELIST", 1) => Card::Namelist,
-        ("PRINT", 2) if arg(1) == "EXTRAP" => Card::PrintExtrap,
-        ("DIM", _) => match arg(1) {
-            "FT" => Card::Dim(Dim::Ft),
-            "IN" => Card::Dim(Dim::In),
-            "M" => Card::Dim(Dim::M),
-            "CM" => Card::Dim(Dim::Cm),
-            other => Card::Bad("DIM".into(), "FT, IN, M or CM".into(), other.into()),
-        },
-        ("DERIV", _) => match arg(1) {
-            "DEG" => Card::Deriv(DerivUnit::Deg),
-            "RAD" => Card::Deriv(DerivUnit::Rad),
-            other => Card::Bad("DERIV".into(), "DEG or RAD".into(), other.into()),
-        },
-        ("DUMP", _) => Card::Dump(words[1..].join(" ")),
-        ("WRITE", _) => Card::Write(words[1..].join(" ")),
+    // (card, number of words it uses)
+    let (card, used) = match first {
+        "NEXT" if arg(1) == "CASE" => (Card::NextCase, 2),
+        "SAVE" => (Card::Save, 1),
+        "DAMP" => (Card::Damp, 1),
+        "BUILD" => (Card::Build, 1),
+        "PART" => (Card::Part, 1),
+        "TRIM" => (Card::Trim, 1),
+        "PLOT" => (Card::Plot, 1),
+        "NAMELIST" => (Card::Namelist, 1),
+        "PRINT" if arg(1) == "EXTRAP" => (Card::PrintExtrap, 2),
+        "DIM" => {
+            let card = match arg(1) {
+                "FT" => Card::Dim(Dim::Ft),
+                "IN" => Card::Dim(Dim::In),
+                "M" => Card::Dim(Dim::M),
+                "CM" => Card::Dim(Dim::Cm),
+                other => Card::Bad("DIM".into(), "FT, IN, M or CM".into(), other.into()),
+            };
+            (card, 2)
+        }
+        "DERIV" => {
+            let card = match arg(1) {
+                "DEG" => Card::Deriv(DerivUnit::Deg),
+                "RAD" => Card::Deriv(DerivUnit::Rad),
+                other => Card::Bad("DERIV".into(), "DEG or RAD".into(), other.into()),
+            };
+            (card, 2)
+        }
+        "DUMP" => (Card::Dump(words[1..].join(" ")), words.len()),
+        "WRITE" => (Card::Write(words[1..].join(" ")), words.len()),
         _ => return None,
     };
-    Some(card)
+    let extra = (words.len() > used).then(|| words[used..].join(" "));
+    Some(ParsedCard { card, extra })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn card(s: &str) -> Option<Card> {
+        parse_card(s, 1).map(|p| p.card)
+    }
+
     #[test]
     fn naca_dash_and_blank_forms() {
         for s in ["NACA-W-6-643-618", "NACA W 6 643-618", "naca-w-6-643-618"] {
-            match parse_card(s, 1) {
+            match card(s) {
                 Some(Card::Naca(a)) => {
                     assert_eq!(a.surface, Surface::Wing);
                     assert_eq!(a.series, NacaSeries::Six);
@@ -273,24 +307,30 @@ mod tests {
                 other => panic!("{s}: {other:?}"),
             }
         }
-        assert!(matches!(
-            parse_card("NACA-Q-4-0012", 1),
-            Some(Card::Bad(..))
-        ));
+        assert!(matches!(card("NACA-Q-4-0012"), Some(Card::Bad(..))));
     }
 
     #[test]
     fn simple_cards() {
-        assert_eq!(parse_card(" NEXT CASE", 1), Some(Card::NextCase));
-        assert_eq!(parse_card("DIM M", 1), Some(Card::Dim(Dim::M)));
+        assert_eq!(card(" NEXT CASE"), Some(Card::NextCase));
+        assert_eq!(card("DIM M"), Some(Card::Dim(Dim::M)));
+        assert_eq!(card("DERIV RAD"), Some(Card::Deriv(DerivUnit::Rad)));
         assert_eq!(
-            parse_card("DERIV RAD", 1),
-            Some(Card::Deriv(DerivUnit::Rad))
-        );
-        assert_eq!(
-            parse_card("CASEID NAVION, ELEVATOR", 1),
+            card("CASEID NAVION, ELEVATOR"),
             Some(Card::CaseId("NAVION, ELEVATOR".into()))
         );
-        assert_eq!(parse_card("SAVSI=1.0", 1), None);
+        assert_eq!(card("SAVSI=1.0"), None);
+    }
+
+    #[test]
+    fn extra_text_is_reported() {
+        let p = parse_card("DERIV RAD LATDER", 1).unwrap();
+        assert_eq!(p.card, Card::Deriv(DerivUnit::Rad));
+        assert_eq!(p.extra.as_deref(), Some("LATDER"));
+        assert_eq!(
+            parse_card("SAVE IT", 1).unwrap().extra.as_deref(),
+            Some("IT")
+        );
+        assert_eq!(parse_card("NEXT CASE", 1).unwrap().extra, None);
     }
 }

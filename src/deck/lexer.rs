@@ -36,6 +36,23 @@ pub enum Tok {
 }
 
 impl Tok {
+    /// The token as written (upper case).
+    pub fn text(&self) -> String {
+        match self {
+            Tok::Name(n) => n.clone(),
+            Tok::Open(n) => format!("${n}"),
+            Tok::Close => "$".into(),
+            Tok::LParen => "(".into(),
+            Tok::RParen => ")".into(),
+            Tok::Equals => "=".into(),
+            Tok::Comma => ",".into(),
+            Tok::Star => "*".into(),
+            Tok::Number { text, .. } => text.clone(),
+            Tok::Logical(b) => (if *b { ".TRUE." } else { ".FALSE." }).into(),
+            Tok::Other(c) => c.escape_default().to_string(),
+        }
+    }
+
     /// How the token reads in a message.
     pub fn describe(&self) -> String {
         match self {
@@ -119,22 +136,17 @@ fn number(i: &str) -> IResult<&str, Tok> {
         .chars()
         .map(|c| if c == 'd' || c == 'D' { 'E' } else { c })
         .collect();
-    // `recognize` above accepts only digits, one dot, sign and exponent, which f64 parses;
-    // a failure would be a bug in the grammar, reported as an unreadable token rather than a panic.
-    match normalised.parse::<f64>() {
-        Ok(value) if value.is_finite() => Ok((
-            rest,
-            Tok::Number {
-                value,
-                integer,
-                text: text.to_string(),
-            },
-        )),
-        _ => Err(nom::Err::Error(nom::error::Error::new(
-            i,
-            nom::error::ErrorKind::Float,
-        ))),
-    }
+    // `recognize` above accepts only digits, one dot, sign and exponent, which f64 parses; a
+    // number beyond the f64 range becomes infinite and the parser reports it.
+    let value = normalised.parse::<f64>().unwrap_or(f64::INFINITY);
+    Ok((
+        rest,
+        Tok::Number {
+            value,
+            integer,
+            text: text.to_string(),
+        },
+    ))
 }
 
 fn punct(i: &str) -> IResult<&str, Tok> {

@@ -122,15 +122,47 @@ struct Open {
     tokens: Vec<Token>,
 }
 
+/// Longest excerpt of deck text quoted in a message.
+const EXCERPT_CHARS: usize = 40;
+/// Most cards listed as swallowed by an unterminated namelist.
+const SWALLOWED_LISTED: usize = 8;
+
+/// Deck text for a message: at most [`EXCERPT_CHARS`] characters, control characters escaped.
+fn excerpt(text: &str) -> String {
+    let mut out: String = text
+        .trim()
+        .chars()
+        .take(EXCERPT_CHARS)
+        .flat_map(|c| {
+            if c.is_control() || c == '\u{a0}' {
+                c.escape_default().collect::<Vec<_>>()
+            } else {
+                vec![c]
+            }
+        })
+        .collect();
+    if text.trim().chars().count() > EXCERPT_CHARS {
+        out.push('…');
+    }
+    out
+}
+
+/// Column (1-based, in characters) of byte offset `byte` in `text`.
+fn column_of(text: &str, byte: usize) -> usize {
+    text[..byte.min(text.len())].chars().count() + 1
+}
+
 struct Reader<'a> {
     file: &'a str,
     diags: Vec<Diagnostic>,
     cases: Vec<RawCase>,
     case: RawCase,
-    /// Elements assigned in the current case (namelist, variable, index), for "assigned twice".
-    assigned: BTreeSet<(&'static str, &'static str, usize)>,
+    /// Elements assigned in the current case, by namelist: (variable, index).
+    assigned: BTreeMap<String, BTreeSet<(&'static str, usize)>>,
     /// Namelists that appeared in the current case.
     seen: BTreeSet<String>,
+    /// The current case began with data carried by SAVE, in this unit system.
+    carried: Option<cards::Dim>,
     open: Option<Open>,
     lines: Vec<&'a str>,
 }
@@ -139,9 +171,10 @@ struct Reader<'a> {
 fn split_lines(text: &str) -> Vec<&str> {
     let mut out: Vec<&str> = text
         .split('\n')
-        .map(|l| l.strip_suffix('\r').unwrap_or(l))
+        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'))
         .collect();
-    if text.ends_with('\n') {
+    // A final line break leaves an empty piece after it.
+    if (text.ends_with('\n') || text.ends_with('\r')) && out.last() == Some(&"") {
         out.pop();
     }
     out
@@ -174,14 +207,21 @@ fn opens_namelist(trimmed: &str) -> Option<String> {
     }
 }
 
-/// Describes a line for "swallowed" lists: its card keyword or namelist.
+/// Describes a line for "swallowed" lists: its namelist or the start of the card.
 fn card_label(line: &str) -> String {
     let t = line.trim();
     if let Some(n) = opens_namelist(t) {
         return format!("${n}");
     }
-    let label: String = t.chars().take(24).collect();
-    label
+    excerpt(&t.chars().take(24).collect::<String>())
+}
+
+/// True for tokens that begin an assignment (`NAME =` or `NAME (`).
+fn has_assignment(toks: &[Token]) -> Option<&str> {
+    toks.windows(2).find_map(|w| match (&w[0].tok, &w[1].tok) {
+        (Tok::Name(n), Tok::Equals | Tok::LParen) => Some(n.as_str()),
+        _ => None,
+    })
 }
 
 impl<'a> Reader<'a> {
@@ -236,36 +276,36 @@ impl<'a> Reader<'a> {
             self.line(i + 1, raw, &lines);
         }
         if let Some(open) = self.open.take() {
-            let n = lines.len();
-            let hint = format!("(last line of the deck is {n})");
+            let hint = format!("(last line of the deck is {})", lines.len());
             self.unterminated(open, vec!["the end of the deck".into()], &hint);
         }
-        self.end_case(lines.len(), true);
+        self.end_case(true);
+        let mut diagnostics = self.diags;
+        sort_diagnostics(&mut diagnostics);
         RawDeck {
             file: self.file.to_string(),
             cases: self.cases,
-            diagnostics: self.diags,
+            diagnostics,
         }
     }
 
     fn missile_check(&self) -> Option<Diagnostic> {
         for (i, l) in self.lines.iter().enumerate() {
             let t = l.trim();
-            if let Some(n) = opens_namelist(t) {
-                if schema::MISSILE_NAMELISTS.contains(&n.as_str()) {
-                    return Some(Diagnostic {
-                        severity: Severity::Error,
-                        file: self.file.to_string(),
-                        line: i + 1,
-                        column: l.find(['$', '&']).map_or(1, |c| c + 1),
-                        card: Some(n.clone()),
-                        variable: None,
-                        problem: DeckProblem::MissileDatcom { namelist: n },
-                        hint: Some(
-                            "run it with Missile DATCOM; Digital DATCOM describes aircraft with $BODY, $WGPLNF, $SYNTHS ...".into(),
-                        ),
-                    });
-                }
+            let Some(n) = opens_namelist(t) else { continue };
+            if schema::MISSILE_NAMELISTS.contains(&n.as_str()) {
+                return Some(Diagnostic {
+                    severity: Severity::Error,
+                    file: self.file.to_string(),
+                    line: i + 1,
+                    column: l.find(['$', '&']).map_or(1, |c| column_of(l, c)),
+                    card: Some(n.clone()),
+                    variable: None,
+                    problem: DeckProblem::MissileDatcom { namelist: n },
+                    hint: Some(
+                        "run it with Missile DATCOM; Digital DATCOM describes aircraft with $BODY, $WGPLNF, $SYNTHS ...".into(),
+                    ),
+                });
             }
         }
         None
@@ -273,6 +313,7 @@ impl<'a> Reader<'a> {
 
     fn line(&mut self, n: usize, raw: &str, all: &[&str]) {
         let trimmed_all = raw.trim();
+        let first_col = column_of(raw, raw.len() - raw.trim_start().len());
         if trimmed_all.is_empty() {
             if self.open.is_none() {
                 self.note_dialect(n, 1, "a blank card");
@@ -280,8 +321,7 @@ impl<'a> Reader<'a> {
             return;
         }
         if is_comment(trimmed_all) {
-            let col = raw.len() - raw.trim_start().len() + 1;
-            self.note_dialect(n, col, "a DATCOM+ comment card");
+            self.note_dialect(n, first_col, "a DATCOM+ comment card");
             return;
         }
         let is_caseid =
@@ -292,8 +332,7 @@ impl<'a> Reader<'a> {
             strip_bang(raw)
         };
         if had_bang {
-            let col = text.chars().count() + 1;
-            self.note_dialect(n, col, "a trailing `!` comment");
+            self.note_dialect(n, text.chars().count() + 1, "a trailing `!` comment");
         }
         if raw.starts_with(['$', '&']) {
             self.note_dialect(
@@ -302,34 +341,36 @@ impl<'a> Reader<'a> {
                 "a namelist starting in column 1 (the original needs column 1 blank)",
             );
         }
-        if !is_caseid && text.chars().any(|c| c.is_ascii_lowercase()) {
-            let col = text
-                .find(|c: char| c.is_ascii_lowercase())
-                .map_or(1, |c| text[..c].chars().count() + 1);
-            self.note_dialect(n, col, "lower case (the original reads upper case only)");
+        if !is_caseid {
+            if let Some(c) = text.find(|c: char| c.is_ascii_lowercase()) {
+                let col = column_of(text, c);
+                self.note_dialect(n, col, "lower case (the original reads upper case only)");
+            }
         }
-        if raw.contains('\t') {
-            let col = raw.find('\t').map_or(1, |c| raw[..c].chars().count() + 1);
-            self.note_dialect(n, col, "a TAB character");
+        if let Some(c) = raw.find('\t') {
+            self.note_dialect(n, column_of(raw, c), "a TAB character");
         }
         let past: String = text.chars().skip(CARD_COLUMNS).collect();
-        if !past.trim().is_empty() && !is_caseid {
-            let card = self.open.as_ref().map(|o| o.name.clone());
+        if !past.trim().is_empty() {
+            let card = match (&self.open, is_caseid) {
+                (Some(o), _) => Some(o.name.clone()),
+                (None, true) => Some("CASEID".to_string()),
+                (None, false) => None,
+            };
             self.diag(
                 Severity::Warning,
                 (n, CARD_COLUMNS + 1),
                 card.as_deref(),
                 None,
                 DeckProblem::PastColumn80 {
-                    found: past.trim().chars().take(30).collect(),
+                    found: excerpt(&past),
                 },
                 Some("break the card into lines of at most 80 columns".into()),
             );
         }
-        if self.open.is_some() {
-            self.namelist_line(n, text, all);
-        } else {
-            self.outside_line(n, text);
+        match self.open.take() {
+            Some(open) => self.namelist_line(n, text, all, open),
+            None => self.outside_line(n, text),
         }
     }
 
@@ -343,104 +384,122 @@ impl<'a> Reader<'a> {
         parse_card(t, n).is_some()
     }
 
-    fn namelist_line(&mut self, n: usize, text: &str, all: &[&str]) {
+    fn namelist_line(&mut self, n: usize, text: &str, all: &[&str], open: Open) {
         if Self::begins_new(text, n) {
-            let open = self
-                .open
-                .take()
-                .expect("namelist_line is only called with an open namelist");
             // The original reads on to the next `$`: list the cards it would swallow.
             let mut swallowed = Vec::new();
+            let mut more = 0;
             for l in all.iter().skip(n - 1) {
                 let (l, _) = strip_bang(l);
                 if l.trim().is_empty() || is_comment(l.trim()) {
                     continue;
                 }
-                swallowed.push(card_label(l));
+                if swallowed.len() < SWALLOWED_LISTED {
+                    swallowed.push(card_label(l));
+                } else {
+                    more += 1;
+                }
                 if l.contains('$') {
                     break;
                 }
+            }
+            if more > 0 {
+                swallowed.push(format!("{more} more cards"));
             }
             self.unterminated(open, swallowed, &format!("before line {n}"));
             self.outside_line(n, text);
             return;
         }
+        if text.starts_with(|c: char| !c.is_whitespace()) {
+            self.note_dialect(
+                n,
+                1,
+                "a namelist continuation starting in column 1 (the original reads it as a control card)",
+            );
+        }
+        self.open = Some(open);
         let mut toks = Vec::new();
         lexer::lex_line(text, n, 1, &mut toks);
         self.feed(toks);
     }
 
-    /// Adds tokens to the open namelist; a `$` closes it, and what follows is read on.
+    /// Reads the tokens of a line: into the open namelist until `$` closes it; after that, a
+    /// `$NAME` opens the next one, and anything else on the line is stray.
     fn feed(&mut self, toks: Vec<Token>) {
-        let mut iter = toks.into_iter();
-        while let Some(t) = iter.next() {
-            match t.tok {
-                Tok::Close => {
-                    if let Some(open) = self.open.take() {
-                        self.close(open);
-                    }
-                    let rest: Vec<Token> = iter.collect();
-                    self.after_close(rest);
-                    return;
-                }
-                Tok::Open(ref name) if schema::namelist(name).is_some() => {
-                    if let Some(open) = self.open.take() {
+        let mut stray: Vec<Token> = Vec::new();
+        for t in toks {
+            match self.open.take() {
+                Some(mut open) => match &t.tok {
+                    Tok::Close => self.close(open),
+                    Tok::Open(name) if schema::namelist(name).is_some() => {
                         let swallowed = vec![format!("${name} (line {})", t.line)];
                         self.unterminated(open, swallowed, &format!("before ${name}"));
+                        self.start(name.clone(), t.line, t.column);
                     }
-                    self.start(name.clone(), t.line, t.column);
-                }
-                _ => {
-                    if let Some(open) = self.open.as_mut() {
+                    _ => {
                         open.tokens.push(t);
+                        self.open = Some(open);
                     }
-                }
+                },
+                None => match &t.tok {
+                    Tok::Open(name) => {
+                        self.stray(std::mem::take(&mut stray));
+                        self.start(name.clone(), t.line, t.column);
+                    }
+                    // `$$`: a doubled terminator; harmless.
+                    Tok::Close if stray.is_empty() => {}
+                    _ => stray.push(t),
+                },
             }
         }
+        self.stray(stray);
     }
 
-    /// Tokens after a closing `$` on the same line.
-    fn after_close(&mut self, rest: Vec<Token>) {
-        let Some(first) = rest.first() else {
-            return;
-        };
-        match &first.tok {
-            Tok::Open(_) => self.feed_outside(rest),
-            Tok::Close => {
-                // `$$`: a doubled terminator; harmless.
-                let tail: Vec<Token> = rest.into_iter().skip(1).collect();
-                self.after_close(tail);
-            }
-            _ => {
-                let found: Vec<String> = rest.iter().take(6).map(|t| t.tok.describe()).collect();
-                let (l, c) = (first.line, first.column);
+    /// Tokens after a closing `$` on the same card. Assignments there are lost in the original
+    /// too, so they are an error; other text a warning.
+    fn stray(&mut self, toks: Vec<Token>) {
+        let Some(first) = toks.first() else { return };
+        let text: Vec<String> = toks.iter().take(8).map(|t| t.tok.text()).collect();
+        let found = excerpt(&text.join(" "));
+        let at = (first.line, first.column);
+        match has_assignment(&toks) {
+            Some(var) => {
+                let var = var.to_string();
                 self.diag(
-                    Severity::Warning,
-                    (l, c),
+                    Severity::Error,
+                    at,
                     None,
-                    None,
-                    DeckProblem::TrailingText {
-                        found: found.join(" "),
-                    },
-                    None,
+                    Some(&var),
+                    DeckProblem::AfterClose { found },
+                    Some(format!(
+                        "remove the `$` before {var}, or open a namelist for it"
+                    )),
                 );
             }
-        }
-    }
-
-    fn feed_outside(&mut self, toks: Vec<Token>) {
-        let mut iter = toks.into_iter();
-        if let Some(t) = iter.next() {
-            if let Tok::Open(name) = &t.tok {
-                self.start(name.clone(), t.line, t.column);
-                self.feed(iter.collect());
-            }
+            None => self.diag(
+                Severity::Warning,
+                at,
+                None,
+                None,
+                DeckProblem::TrailingText { found },
+                None,
+            ),
         }
     }
 
     fn start(&mut self, name: String, line: usize, column: usize) {
         self.touch_case(line);
-        if schema::namelist(&name).is_none() {
+        let known = schema::namelist(&name).is_some();
+        if name == "EXPR00" {
+            self.diag(
+                Severity::Error,
+                (line, column),
+                Some(&name),
+                None,
+                DeckProblem::UnknownNamelist { found: name.clone() },
+                Some("experimental-data namelists are EXPR01, EXPR02, ..., one per Mach number of $FLTCON".into()),
+            );
+        } else if !known {
             let hint = schema::nearest(&name, schema::namelists().keys().map(String::as_str))
                 .map(|n| format!("did you mean ${n}?"));
             self.diag(
@@ -464,19 +523,42 @@ impl<'a> Reader<'a> {
 
     fn outside_line(&mut self, n: usize, text: &str) {
         let trimmed = text.trim();
-        let col = text.len() - text.trim_start().len() + 1;
+        let col = column_of(text, text.len() - text.trim_start().len());
         if trimmed.starts_with(['$', '&']) {
             let mut toks = Vec::new();
             lexer::lex_line(text, n, 1, &mut toks);
+            // `$ NAME`: a blank between `$` and a namelist's name.
+            if let (Some(Tok::Close), Some(Tok::Name(name))) =
+                (toks.first().map(|t| &t.tok), toks.get(1).map(|t| &t.tok))
+            {
+                if schema::namelist(name).is_some() {
+                    let name = name.clone();
+                    let at = (toks[1].line, toks[1].column);
+                    self.diag(
+                        Severity::Error,
+                        (n, col),
+                        Some(&name),
+                        None,
+                        DeckProblem::Syntax {
+                            expected: format!("`${name}` with no blank after `$`"),
+                            found: format!("`$ {name}`"),
+                        },
+                        Some(format!("write ${name}; read here as ${name}")),
+                    );
+                    self.start(name, at.0, at.1);
+                    self.feed(toks.into_iter().skip(2).collect());
+                    return;
+                }
+            }
             match toks.first().map(|t| &t.tok) {
-                Some(Tok::Open(_)) => self.feed_outside(toks),
+                Some(Tok::Open(_)) => self.feed(toks),
                 _ => self.diag(
                     Severity::Warning,
                     (n, col),
                     None,
                     None,
                     DeckProblem::TrailingText {
-                        found: trimmed.chars().take(30).collect(),
+                        found: excerpt(trimmed),
                     },
                     Some("a `$` outside a namelist closes nothing".into()),
                 ),
@@ -484,7 +566,28 @@ impl<'a> Reader<'a> {
             return;
         }
         match parse_card(trimmed, n) {
-            Some(card) => self.card(n, col, card),
+            Some(parsed) => {
+                if col > 1 && !matches!(parsed.card, Card::NextCase) {
+                    self.note_dialect(
+                        n,
+                        col,
+                        "a control card not in column 1 (the original reads it as namelist data)",
+                    );
+                }
+                if let Some(extra) = &parsed.extra {
+                    self.diag(
+                        Severity::Warning,
+                        (n, col),
+                        None,
+                        None,
+                        DeckProblem::TrailingText {
+                            found: excerpt(extra),
+                        },
+                        Some("the card needs nothing more; the rest is ignored".into()),
+                    );
+                }
+                self.card(n, col, parsed.card);
+            }
             None => {
                 let upper = trimmed.to_ascii_uppercase();
                 let word: String = upper
@@ -499,9 +602,9 @@ impl<'a> Reader<'a> {
                         Severity::Error,
                         (n, col),
                         None,
-                        Some(&word),
+                        Some(&excerpt(&word)),
                         DeckProblem::AssignmentOutsideNamelist {
-                            found: trimmed.chars().take(30).collect(),
+                            found: excerpt(trimmed),
                         },
                         home.or_else(|| Some("was the namelist above closed too early?".into())),
                     );
@@ -514,7 +617,7 @@ impl<'a> Reader<'a> {
                         None,
                         None,
                         DeckProblem::UnknownCard {
-                            found: trimmed.chars().take(40).collect(),
+                            found: excerpt(trimmed),
                         },
                         hint,
                     );
@@ -527,23 +630,40 @@ impl<'a> Reader<'a> {
         if card != Card::NextCase {
             self.touch_case(n);
         }
-        let c = &mut self.case.cards;
         match card {
             Card::CaseId(text) => self.case.caseid = Some(text),
-            Card::NextCase => self.end_case(n, false),
+            Card::NextCase => self.end_case(false),
             Card::Save => self.case.save = true,
-            Card::Dim(d) => c.dim = Some(d),
-            Card::Deriv(d) => c.deriv = Some(d),
-            Card::Damp => c.damp = true,
-            Card::Build => c.build = true,
-            Card::Part => c.part = true,
-            Card::Trim => c.trim = true,
-            Card::Plot => c.plot = true,
-            Card::PrintExtrap => c.print_extrap = true,
-            Card::Namelist => c.namelist = true,
-            Card::Dump(s) => c.dump.push(s),
+            Card::Dim(d) => {
+                if let Some(old) = self.carried.filter(|old| *old != d) {
+                    self.diag(
+                        Severity::Warning,
+                        (n, col),
+                        Some("DIM"),
+                        None,
+                        DeckProblem::Case {
+                            message: format!(
+                                "the unit system changes from DIM {} to DIM {} in a case that carries saved namelists: they are read in the new units",
+                                old.name(),
+                                d.name()
+                            ),
+                        },
+                        None,
+                    );
+                }
+                self.case.cards.dim = Some(d);
+            }
+            Card::Deriv(d) => self.case.cards.deriv = Some(d),
+            Card::Damp => self.case.cards.damp = true,
+            Card::Build => self.case.cards.build = true,
+            Card::Part => self.case.cards.part = true,
+            Card::Trim => self.case.cards.trim = true,
+            Card::Plot => self.case.cards.plot = true,
+            Card::PrintExtrap => self.case.cards.print_extrap = true,
+            Card::Namelist => self.case.cards.namelist = true,
+            Card::Dump(s) => self.case.cards.dump.push(s),
             Card::Write(s) => {
-                c.write.push(s);
+                self.case.cards.write.push(s);
                 self.diag(
                     Severity::Note,
                     (n, col),
@@ -556,6 +676,24 @@ impl<'a> Reader<'a> {
                 );
             }
             Card::Naca(a) => {
+                if let Some(old) = self.case.airfoils.iter().find(|b| b.surface == a.surface) {
+                    if old.line > 0 && self.seen.contains(&format!("NACA-{:?}", a.surface)) {
+                        let message = format!(
+                            "a second NACA card for the {} replaces the one on line {}",
+                            a.surface.name(),
+                            old.line
+                        );
+                        self.diag(
+                            Severity::Warning,
+                            (n, col),
+                            Some("NACA"),
+                            None,
+                            DeckProblem::Case { message },
+                            None,
+                        );
+                    }
+                }
+                self.seen.insert(format!("NACA-{:?}", a.surface));
                 self.case.airfoils.retain(|b| b.surface != a.surface);
                 self.case.airfoils.push(a);
             }
@@ -567,7 +705,7 @@ impl<'a> Reader<'a> {
                 DeckProblem::BadCard {
                     card: card.clone(),
                     expected,
-                    found,
+                    found: excerpt(&found),
                 },
                 None,
             ),
@@ -593,6 +731,9 @@ impl<'a> Reader<'a> {
 
     /// Applies a closed namelist's assignments to the current case.
     fn close(&mut self, open: Open) {
+        if open.name == "EXPR00" {
+            return;
+        }
         let Some(spec) = schema::namelist(&open.name) else {
             return;
         };
@@ -617,7 +758,9 @@ impl<'a> Reader<'a> {
         };
         if let Some(rival) = rival {
             if self.case.namelists.remove(rival).is_some() {
-                self.diag(Severity::Warning, (open.line, open.column),
+                self.diag(
+                    Severity::Warning,
+                    (open.line, open.column),
                     Some(&open.name),
                     None,
                     DeckProblem::Case {
@@ -643,41 +786,44 @@ impl<'a> Reader<'a> {
         }
         self.case.namelists.entry(open.name.clone()).or_default();
         for a in assignments {
-            self.assign(spec, &a);
+            self.assign(&open.name, spec, &a);
         }
     }
 
-    fn assign(&mut self, spec: &'static NamelistSpec, a: &namelist::Assignment) {
-        let nl = spec.name.as_str();
-        let Some(var) = spec.var(&a.name) else {
-            let near = schema::nearest(&a.name, spec.vars.keys().map(String::as_str))
+    /// Applies one assignment to namelist `name` (whose schema is `spec`).
+    fn assign(&mut self, name: &str, spec: &'static NamelistSpec, a: &namelist::Assignment) {
+        let at = (a.line, a.column);
+        let written = a.name.as_str();
+        let canonical = schema::canonical(&spec.name, written);
+        let Some(var) = spec.var(canonical) else {
+            let near = schema::nearest(written, spec.vars.keys().map(String::as_str))
                 .map(|n| format!("did you mean {n}?"))
                 .or_else(|| {
-                    schema::homes(&a.name).map(|h| format!("{} is a variable of {h}", a.name))
+                    schema::homes(written).map(|h| format!("{written} is a variable of {h}"))
                 });
             self.diag(
                 Severity::Error,
-                (a.line, a.column),
-                Some(nl),
-                Some(&a.name),
+                at,
+                Some(name),
+                Some(&excerpt(written)),
                 DeckProblem::UnknownVariable {
-                    namelist: nl.into(),
-                    found: a.name.clone(),
+                    namelist: name.into(),
+                    found: excerpt(written),
                 },
                 near,
             );
             return;
         };
         let start = a.index.unwrap_or(1);
-        let last = start + a.values.len().saturating_sub(1);
+        let last = start.saturating_add(a.values.len().saturating_sub(1));
         if last > var.len {
             self.diag(
                 Severity::Error,
-                (a.line, a.column),
-                Some(nl),
-                Some(&a.name),
+                at,
+                Some(name),
+                Some(written),
                 DeckProblem::TooManyValues {
-                    variable: a.name.clone(),
+                    variable: written.into(),
                     capacity: var.len,
                     given: a.values.len(),
                     last_index: last,
@@ -705,11 +851,11 @@ impl<'a> Reader<'a> {
             };
             self.diag(
                 Severity::Error,
-                (a.line, a.column),
-                Some(nl),
-                Some(&a.name),
+                at,
+                Some(name),
+                Some(written),
                 DeckProblem::WrongKind {
-                    variable: a.name.clone(),
+                    variable: written.into(),
                     expected: expected.into(),
                     found,
                 },
@@ -717,32 +863,35 @@ impl<'a> Reader<'a> {
             );
             return;
         }
-        let reassigned = (start..=last.min(var.len))
-            .any(|i| self.assigned.contains(&(nl, var.name.as_str(), i)));
+        let end = last.min(var.len);
+        let assigned = self.assigned.entry(name.to_string()).or_default();
+        let reassigned = (start..=end).any(|i| !assigned.insert((var.name.as_str(), i)));
         if reassigned {
             self.diag(
                 Severity::Warning,
-                (a.line, a.column),
-                Some(nl),
-                Some(&a.name),
+                at,
+                Some(name),
+                Some(written),
                 DeckProblem::Reassigned {
-                    variable: a.name.clone(),
+                    variable: written.into(),
                 },
                 None,
             );
         }
-        let values = self.case.namelists.entry(nl.to_string()).or_default();
+        let values = self.case.namelists.entry(name.to_string()).or_default();
         let entry = values
-            .entry(a.name.clone())
+            .entry(var.name.clone())
             .or_insert_with(|| match var.kind {
                 Kind::Logical => Value::Logicals(Vec::new()),
                 Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
             });
-        for (k, lit) in a.values.iter().enumerate() {
+        for (k, lit) in a
+            .values
+            .iter()
+            .enumerate()
+            .take(end.saturating_sub(start) + 1)
+        {
             let i = start + k;
-            if i > var.len {
-                break;
-            }
             match (&mut *entry, lit) {
                 (Value::Numbers(v), Lit::Number { value, .. }) => {
                     if v.len() < i {
@@ -762,19 +911,33 @@ impl<'a> Reader<'a> {
         }
         self.case
             .origins
-            .insert(format!("{nl}.{}", a.name), (a.line, a.column));
-        for i in start..=last.min(var.len) {
-            self.assigned.insert((nl, var.name.as_str(), i));
-        }
+            .insert(format!("{name}.{}", var.name), (a.line, a.column));
     }
 
-    /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...).
+    /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...), in
+    /// both directions, and experimental-data namelists against the Mach numbers.
     fn check_counts(&mut self) {
         let mut found = Vec::new();
+        let nmach = self.case.scalar("FLTCON", "NMACH");
         for (nl, values) in &self.case.namelists {
             let Some(spec) = schema::namelist(nl) else {
                 continue;
             };
+            if let (Some(nn), Some(nmach)) = (nl.strip_prefix("EXPR"), nmach) {
+                if nn.parse::<f64>().is_ok_and(|k| k > nmach) {
+                    found.push((
+                        nl.clone(),
+                        None,
+                        Severity::Warning,
+                        DeckProblem::Case {
+                            message: format!(
+                                "${nl} is for Mach number {nn} but NMACH={nmach}: it is not used"
+                            ),
+                        },
+                        None,
+                    ));
+                }
+            }
             for (name, value) in values {
                 let Some(var) = spec.var(name) else { continue };
                 let Some(count_var) = &var.count else {
@@ -793,7 +956,8 @@ impl<'a> Reader<'a> {
                 if count.fract() != 0.0 || count < 0.0 || count > var.len as f64 {
                     found.push((
                         nl.clone(),
-                        count_var.clone(),
+                        Some(count_var.clone()),
+                        Severity::Error,
                         DeckProblem::WrongKind {
                             variable: count_var.clone(),
                             expected: format!("a whole number from 0 to {}", var.len),
@@ -802,9 +966,37 @@ impl<'a> Reader<'a> {
                         None,
                     ));
                 } else if (given as f64) < count {
+                    // The original runs such a case, reading the missing values as zero (for
+                    // angles of attack it prints a row of NDM); we use the values given.
+                    let hint = if given == 0 {
+                        format!("give {count} values of {name}")
+                    } else {
+                        format!("give {count} values of {name} or set {count_var}={given}.0; only the {given} given are used here, the original reads the others as zero")
+                    };
                     found.push((
                         nl.clone(),
-                        name.clone(),
+                        Some(name.clone()),
+                        Severity::Warning,
+                        DeckProblem::CountMismatch {
+                            count_variable: count_var.clone(),
+                            count,
+                            variable: name.clone(),
+                            given,
+                        },
+                        Some(hint),
+                    ));
+                } else if (given as f64) > count
+                    && self.assigned.get(nl).is_some_and(|a| {
+                        a.iter()
+                            .any(|(v, i)| *v == var.name.as_str() && (*i as f64) > count)
+                    })
+                {
+                    // Values beyond the count written in this case (saved data may hold more
+                    // values than a later case asks for on purpose).
+                    found.push((
+                        nl.clone(),
+                        Some(name.clone()),
+                        Severity::Warning,
                         DeckProblem::CountMismatch {
                             count_variable: count_var.clone(),
                             count,
@@ -812,52 +1004,70 @@ impl<'a> Reader<'a> {
                             given,
                         },
                         Some(format!(
-                            "give {count} values of {name} or set {count_var}={given}.0; only the {given} given are used here, the original reads the others as zero"
+                            "{name} beyond the first {count} is not used; raise {count_var} to use all {given}"
                         )),
                     ));
                 }
             }
         }
-        let line = self.case.first_line;
-        for (nl, var, problem, hint) in found {
-            // The original runs such a case, reading the missing values as zero (for angles of
-            // attack it prints a row of NDM); we use the values given, and say so.
-            let severity = match problem {
-                DeckProblem::CountMismatch { .. } => Severity::Warning,
-                _ => Severity::Error,
-            };
-            self.diag(severity, (line, 0), Some(&nl), Some(&var), problem, hint);
+        for (nl, var, severity, problem, hint) in found {
+            let at = var
+                .as_ref()
+                .and_then(|v| self.case.origins.get(&format!("{nl}.{v}")))
+                .copied()
+                .unwrap_or((self.case.first_line, 0));
+            self.diag(severity, at, Some(&nl), var.as_deref(), problem, hint);
         }
     }
 
     /// Closes the current case (at NEXT CASE or the end of the deck) and starts the next one,
-    /// carrying the namelists and airfoil cards over when the case had SAVE.
-    fn end_case(&mut self, line: usize, at_end: bool) {
-        let _ = line;
+    /// carrying the namelists and airfoil cards over when the case had SAVE. DIM and DERIV stay
+    /// in force for every later case, SAVE or not (the original keeps them in global storage);
+    /// every other control card belongs to its case.
+    fn end_case(&mut self, at_end: bool) {
+        let mut next = RawCase::default();
+        next.cards.dim = self.case.cards.dim;
+        next.cards.deriv = self.case.cards.deriv;
         if self.case.is_empty() {
+            if !at_end && self.carried.is_some() {
+                // The original runs the saved data once more as a case of its own here.
+                self.note_dialect(
+                    0,
+                    0,
+                    "a NEXT CASE with no cards of its own after SAVE: the original runs the saved namelists once more as a separate case; datcom-rs does not",
+                );
+            }
             if !at_end {
-                // NEXT CASE with nothing before it: nothing to close.
-                self.case = RawCase::default();
+                self.case = next;
+                self.carried = None;
+                self.assigned.clear();
+                self.seen.clear();
             }
             return;
         }
         self.check_counts();
-        let mut next = RawCase::default();
         if self.case.save {
             next.namelists = self.case.namelists.clone();
             next.airfoils = self.case.airfoils.clone();
+            next.origins = self.case.origins.clone();
+            self.carried = Some(self.case.cards.dim.unwrap_or_default());
+        } else {
+            self.carried = None;
         }
-        // DIM and DERIV stay in force for every later case, SAVE or not (the original keeps
-        // them in global storage); every other control card belongs to its case.
-        next.cards.dim = self.case.cards.dim;
-        next.cards.deriv = self.case.cards.deriv;
-        let done = std::mem::replace(&mut self.case, next);
-        let mut done = done;
+        let mut done = std::mem::replace(&mut self.case, next);
         done.number = self.cases.len() + 1;
         self.cases.push(done);
         self.assigned.clear();
         self.seen.clear();
     }
+}
+
+/// Orders diagnostics by place (line, then column), whole-case ones after those of the same
+/// line; the sort is stable, so problems at one place keep the order they were found in. The
+/// same problem at the same place (found again in a case that carries saved data) is kept once.
+pub fn sort_diagnostics(d: &mut Vec<Diagnostic>) {
+    d.sort_by_key(|x| (x.line, x.column == 0, x.column));
+    d.dedup();
 }
 
 use cards::parse_card;
@@ -869,8 +1079,9 @@ pub fn read(text: &str, file: &str) -> RawDeck {
         diags: Vec::new(),
         cases: Vec::new(),
         case: RawCase::default(),
-        assigned: BTreeSet::new(),
+        assigned: BTreeMap::new(),
         seen: BTreeSet::new(),
+        carried: None,
         open: None,
         lines: split_lines(text),
     };

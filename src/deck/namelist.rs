@@ -38,6 +38,8 @@ pub struct BodyProblem {
 
 /// Largest repeat count accepted in `n*value`; more than any DATCOM array holds.
 const MAX_REPEAT: usize = 1000;
+/// Largest array index accepted in `NAME(i)`; more than any DATCOM array holds.
+const MAX_INDEX: f64 = 1000.0;
 
 struct Parser<'a> {
     toks: &'a [Token],
@@ -156,7 +158,7 @@ impl<'a> Parser<'a> {
                         ..
                     }),
                     Some(Tok::RParen),
-                ) if *value >= 1.0 => {
+                ) if (1.0..=MAX_INDEX).contains(value) => {
                     index = Some(*value as usize);
                     self.pos += 2;
                 }
@@ -169,7 +171,9 @@ impl<'a> Parser<'a> {
                         at,
                         Some(name),
                         DeckProblem::Syntax {
-                            expected: format!("a positive whole-number index in {name}(...)"),
+                            expected: format!(
+                                "a whole-number index from 1 to {MAX_INDEX} in {name}(...)"
+                            ),
                             found,
                         },
                         Some(format!("write {name}(1)=... to start at the first element")),
@@ -201,6 +205,23 @@ impl<'a> Parser<'a> {
     fn constant(&mut self) -> Option<Lit> {
         let t = self.peek(0)?;
         let lit = match &t.tok {
+            Tok::Number { value, text, .. } if !value.is_finite() => {
+                let found = format!("`{text}`");
+                self.problem(
+                    t,
+                    None,
+                    DeckProblem::Syntax {
+                        expected: "a number within the range of double precision (about ±1.8E308)"
+                            .into(),
+                        found,
+                    },
+                    None,
+                );
+                Lit::Number {
+                    value: 0.0,
+                    integer: false,
+                }
+            }
             Tok::Number { value, integer, .. } => Lit::Number {
                 value: *value,
                 integer: *integer,
@@ -249,7 +270,7 @@ impl<'a> Parser<'a> {
                 );
                 return true;
             }
-            out.extend(std::iter::repeat(lit).take(count as usize));
+            out.extend(std::iter::repeat_n(lit, count as usize));
             return true;
         }
         match self.constant() {

@@ -2,8 +2,10 @@
 //! physical unit.
 //!
 //! The table is data (`schema.tsv`, embedded at build time), taken from the declarations and
-//! namelist-emulator name tables of the original program (routines CONERR/NAMER and the COMMON
-//! blocks they fill); the unit column is ours, used to convert at the edge under DIM FT/IN/M/CM.
+//! namelist-emulator name tables of the original program (reader routines XNAM1..XNAM23 and the
+//! COMMON blocks they fill). The dimension column follows the original's unit conversion
+//! (routine CONV) slot by slot: `length`/`area` are geometry and scale with SYNTHS SCALE,
+//! `*_unscaled` do not; it is used to convert at the edge under DIM FT/IN/M/CM.
 
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -32,6 +34,8 @@ pub enum Dimension {
     Temperature,
     /// Weight or force.
     Force,
+    /// Surface roughness height: inches under FT and IN, centimetres under M and CM.
+    Roughness,
 }
 
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -43,6 +47,9 @@ pub struct VarSpec {
     /// The variable that says how many values the array holds (`NALPHA` for `ALSCHD`).
     pub count: Option<String>,
     pub dimension: Dimension,
+    /// Multiplied by SYNTHS SCALE (lengths by SCALE, areas by SCALE²), as the original does
+    /// for geometry; flight conditions, roughness and $LARWB are not scaled.
+    pub scaled: bool,
 }
 
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -69,8 +76,9 @@ fn parse_kind(s: &str) -> Kind {
 
 fn parse_dimension(s: &str) -> Dimension {
     match s {
-        "length" => Dimension::Length,
-        "area" => Dimension::Area,
+        "length" | "length_unscaled" => Dimension::Length,
+        "area" | "area_unscaled" => Dimension::Area,
+        "roughness" => Dimension::Roughness,
         "per_length" => Dimension::PerLength,
         "velocity" => Dimension::Velocity,
         "pressure" => Dimension::Pressure,
@@ -93,6 +101,7 @@ fn load() -> BTreeMap<String, NamelistSpec> {
             len: f[3].parse().unwrap_or(1),
             count: (!f[4].is_empty()).then(|| f[4].to_string()),
             dimension: parse_dimension(f[5]),
+            scaled: matches!(f[5], "length" | "area"),
         };
         out.entry(f[0].to_string())
             .or_insert_with(|| NamelistSpec {
@@ -127,6 +136,37 @@ pub const MISSILE_NAMELISTS: &[&str] = &[
     "REFQ", "AXIBOD", "ELLBOD", "FINSET1", "FINSET2", "FINSET3", "FINSET4", "PROTUB", "INLET",
     "DEFLCT", "INERTIA", "SYMCS",
 ];
+
+/// Names that share storage with another in the original (EQUIVALENCE): (namelist, alias,
+/// variable). An assignment to the alias is an assignment to the variable.
+const ALIASES: &[(&str, &str, &str)] = &[
+    ("FLTCON", "ALPHA", "ALSCHD"),
+    ("WGSCHR", "CMO", "CM0"),
+    ("WGSCHR", "CMOT", "CM0T"),
+    ("WGSCHR", "CLAM0", "CLAMO"),
+    ("WGSCHR", "ALPHA0", "ALPHAO"),
+    ("HTSCHR", "CMO", "CM0"),
+    ("HTSCHR", "CMOT", "CM0T"),
+    ("HTSCHR", "CLAM0", "CLAMO"),
+    ("HTSCHR", "ALPHA0", "ALPHAO"),
+    ("VTSCHR", "CMO", "CM0"),
+    ("VTSCHR", "CMOT", "CM0T"),
+    ("VTSCHR", "CLAM0", "CLAMO"),
+    ("VTSCHR", "ALPHA0", "ALPHAO"),
+    ("VFSCHR", "CMO", "CM0"),
+    ("VFSCHR", "CMOT", "CM0T"),
+    ("VFSCHR", "CLAM0", "CLAMO"),
+    ("VFSCHR", "ALPHA0", "ALPHAO"),
+    ("SYMFLP", "SCHD", "SCHA"),
+];
+
+/// The variable an assignment to `var` in `namelist` sets (itself, unless it is an alias).
+pub fn canonical<'a>(namelist: &str, var: &'a str) -> &'a str {
+    ALIASES
+        .iter()
+        .find(|(nl, alias, _)| *nl == namelist && *alias == var)
+        .map_or(var, |(_, _, v)| v)
+}
 
 /// The namelists that have a variable called `var`, as `$NAME` joined by commas.
 pub fn homes(var: &str) -> Option<String> {

@@ -98,7 +98,7 @@ pub fn to_string(results: &Results) -> String {
                             row.push(dd(col));
                         }
                     }
-                    None => row.extend(std::iter::repeat(String::new()).take(9)),
+                    None => row.extend(std::iter::repeat_n(String::new(), 9)),
                 }
                 out.push_str(&row.join(","));
                 out.push('\n');

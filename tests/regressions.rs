@@ -1,0 +1,238 @@
+//! One test per fixed bug, named after what broke.
+
+use datcom::deck::{self, Value};
+use datcom::{DeckProblem, Diagnosed, Severity};
+
+const FLIGHT: &str = " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=1.0$\n";
+
+fn read(text: &str) -> datcom::Deck {
+    datcom::read_deck(text, "t.dcm")
+}
+
+fn has(d: &datcom::Deck, severity: Severity, text: &str) -> bool {
+    d.diagnostics
+        .iter()
+        .any(|x| x.severity == severity && x.to_string().contains(text))
+}
+
+fn no_non_finite(d: &datcom::Deck) {
+    let r = datcom::run(d);
+    let text = datcom::report::text::to_string(&r);
+    assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+    let csv = datcom::report::csv::to_string(&r);
+    assert!(!csv.contains("NaN") && !csv.contains("inf"), "{csv}");
+}
+
+#[test]
+fn many_dollars_on_one_line_do_not_overflow_the_stack() {
+    let line = format!(" $FLTCON NMACH=1.0{}", "$".repeat(50_000));
+    let _ = read(&line);
+    let many = " $OPTINS SREF=1.0$ ".repeat(30_000);
+    let d = read(&many);
+    assert_eq!(d.cases.len(), 1);
+}
+
+#[test]
+fn huge_array_index_is_an_error_not_an_overflow() {
+    let d = read(&format!(
+        "{FLIGHT} $BODY NX=2.0, X(1)=0.0,1.0, R(99999999999999999999)=1.0,2.0$\n"
+    ));
+    assert!(
+        has(&d, Severity::Error, "index from 1 to 1000"),
+        "{:?}",
+        d.diagnostics
+    );
+}
+
+#[test]
+fn expr_namelists_are_kept_per_mach_number() {
+    let raw = deck::read(" $EXPR01 CLAWB=0.0575$\n $EXPR02 CLAWB=0.06$\n", "t");
+    let c = &raw.cases[0];
+    assert_eq!(
+        c.namelists["EXPR01"]["CLAWB"],
+        Value::Numbers(vec![Some(0.0575)])
+    );
+    assert_eq!(
+        c.namelists["EXPR02"]["CLAWB"],
+        Value::Numbers(vec![Some(0.06)])
+    );
+    assert!(!c.namelists.contains_key("EXPRnn"));
+    assert!(!raw
+        .diagnostics
+        .iter()
+        .any(|d| matches!(d.problem, DeckProblem::Reassigned { .. })));
+    let d = read(&format!("{FLIGHT} $EXPR00 CLAWB=1.0$\n"));
+    assert!(has(&d, Severity::Error, "EXPR00"));
+}
+
+#[test]
+fn two_next_case_cards_keep_dim_and_deriv() {
+    let raw = deck::read(
+        &format!("DIM M\nDERIV RAD\n{FLIGHT}SAVE\nNEXT CASE\nNEXT CASE\n $OPTINS SREF=2.0$\n"),
+        "t",
+    );
+    let last = raw.cases.last().unwrap();
+    assert_eq!(last.cards.dim, Some(deck::cards::Dim::M));
+    assert_eq!(last.cards.deriv, Some(deck::cards::DerivUnit::Rad));
+}
+
+#[test]
+fn extreme_flight_conditions_give_errors_not_nan() {
+    for fl in [
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=1.E30, NALPHA=1.0, ALSCHD(1)=0.0$\n",
+        " $FLTCON NMACH=1.0, MACH(1)=1.E300, NALT=1.0, ALT(1)=0.0, NALPHA=1.0, ALSCHD(1)=0.0$\n",
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, PINF(1)=-5., TINF(1)=-10., NALPHA=1.0, ALSCHD(1)=0.0$\n",
+        " $FLTCON NMACH=1.0, MACH(1)=1E400, NALT=1.0, ALT(1)=0.0$\n",
+    ] {
+        let d = read(&format!("{fl} $SYNTHS XCG=1.0$\n"));
+        assert!(d.has_errors(), "{fl}");
+        no_non_finite(&d);
+    }
+}
+
+#[test]
+fn roughness_is_in_inches_or_centimetres() {
+    let d = read(&format!("{FLIGHT} $OPTINS ROUGFC=0.16E-3$\n"));
+    let r = d.cases[0].reference.roughness.unwrap();
+    assert!((r - 0.16e-3 * 0.0254).abs() < 1e-15, "{r}");
+    let d = read(&format!("DIM M\n{FLIGHT} $OPTINS ROUGFC=0.16E-3$\n"));
+    let r = d.cases[0].reference.roughness.unwrap();
+    assert!((r - 0.16e-3 * 0.01).abs() < 1e-15, "{r}");
+}
+
+#[test]
+fn larwb_lengths_are_not_scaled() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0$\n $SYNTHS XCG=1.0, SCALE=0.5$\n $LARWB SREF=10.0, L=5.0, XCG=2.0$\n");
+    let l = d.cases[0].larwb.as_ref().unwrap();
+    assert!((l.length.unwrap() - 5.0 * 0.3048).abs() < 1e-12);
+    let s = d.cases[0].synthesis.as_ref().unwrap();
+    assert!(
+        (s.xcg.unwrap() - 0.5 * 0.3048).abs() < 1e-12,
+        "SYNTHS lengths are scaled"
+    );
+}
+
+#[test]
+fn values_beyond_a_count_are_reported() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.4,0.5,0.6, NALPHA=2.0, ALSCHD(1)=0.0,2.0,4.0,6.0$\n $SYNTHS XCG=1.0$\n $BODY NX=2.0, X(1)=0.0,1.0,2.0,3.0, R(1)=0.1,0.2,0.3,0.4$\n");
+    for v in ["MACH", "ALSCHD", "X", "R"] {
+        assert!(
+            d.diagnostics
+                .iter()
+                .any(|x| x.variable.as_deref() == Some(v) && x.severity == Severity::Warning),
+            "{v}: {:?}",
+            d.diagnostics
+        );
+    }
+}
+
+#[test]
+fn alpha_is_the_same_variable_as_alschd() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=3.0, ALSCHD(1)=0.0,2.0, ALPHA(3)=4.0$\n $SYNTHS XCG=1.0$\n");
+    assert_eq!(
+        d.cases[0].flight.as_ref().unwrap().alpha_deg,
+        vec![0.0, 2.0, 4.0]
+    );
+}
+
+#[test]
+fn temperature_without_pressure_is_reported() {
+    let d = read(" $FLTCON NMACH=1.0, MACH(1)=0.5, NALT=1.0, TINF(1)=400.0, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=1.0$\n");
+    assert!(
+        has(&d, Severity::Warning, "TINF is given without PINF"),
+        "{:?}",
+        d.diagnostics
+    );
+}
+
+#[test]
+fn assignments_after_a_stray_dollar_are_an_error() {
+    let d = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4,$ NALPHA=2.0, ALSCHD(1)=0.0,4.0$\n $SYNTHS XCG=1.0$\n",
+    );
+    assert!(
+        has(&d, Severity::Error, "after the closing `$`"),
+        "{:?}",
+        d.diagnostics
+    );
+}
+
+#[test]
+fn blank_after_dollar_is_an_error_and_read() {
+    let d =
+        read(" $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=1.0, ALSCHD(1)=0.0$\n $ SYNTHS XW=1.0$\n");
+    assert!(
+        has(&d, Severity::Error, "no blank after `$`"),
+        "{:?}",
+        d.diagnostics
+    );
+    assert!(d.cases[0].synthesis.is_some());
+}
+
+#[test]
+fn physical_messages_quote_the_deck_units() {
+    let d = read(&format!("{FLIGHT} $OPTINS SREF=-2.0$\n"));
+    assert!(
+        has(&d, Severity::Error, "SREF must be positive; found -2"),
+        "{:?}",
+        d.diagnostics
+    );
+}
+
+#[test]
+fn carriage_return_line_endings() {
+    let d = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0$\r $SYNTHS XCG=1.0$\rCASEID MAC\r",
+    );
+    assert!(!d.has_errors(), "{:?}", d.diagnostics);
+    assert_eq!(d.cases[0].caseid.as_deref(), Some("MAC"));
+}
+
+#[test]
+fn naca_designation_is_checked() {
+    let d = read(&format!(
+        "{FLIGHT} $WGPLNF CHRDR=1.0, SSPN=2.0$\nNACA-W-4-ABCD EXTRA\n"
+    ));
+    assert!(has(&d, Severity::Error, "NACA"), "{:?}", d.diagnostics);
+}
+
+#[test]
+fn second_naca_card_for_a_surface_is_reported() {
+    let d = read(&format!(
+        "{FLIGHT} $HTPLNF CHRDR=1.0, SSPN=2.0$\nNACA-H-4-0012\nNACA-H-4-0009\n"
+    ));
+    assert!(
+        has(&d, Severity::Warning, "second NACA card"),
+        "{:?}",
+        d.diagnostics
+    );
+}
+
+#[test]
+fn extra_text_on_a_control_card_is_reported() {
+    let d = read(&format!("DIM FT NONSENSE\n{FLIGHT}"));
+    assert!(
+        has(&d, Severity::Warning, "NONSENSE"),
+        "{:?}",
+        d.diagnostics
+    );
+}
+
+#[test]
+fn loop_outside_one_to_three_is_an_error() {
+    let d = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0, LOOP=7.0$\n $SYNTHS XCG=1.0$\n",
+    );
+    assert!(has(&d, Severity::Error, "LOOP"), "{:?}", d.diagnostics);
+}
+
+#[test]
+fn saved_data_repeated_warnings_are_reported_once() {
+    let d = read(" $FLTCON NMACH=2.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0$\n $SYNTHS XCG=1.0$\nSAVE\nNEXT CASE\nSAVE\nNEXT CASE\n");
+    let n = d
+        .diagnostics
+        .iter()
+        .filter(|x| matches!(x.problem, DeckProblem::CountMismatch { .. }))
+        .count();
+    assert_eq!(n, 1, "{:?}", d.diagnostics);
+}
