@@ -25,6 +25,7 @@ pub mod charts;
 pub mod conditions;
 pub mod deck;
 pub mod error;
+pub mod geometry;
 pub mod report;
 pub mod results;
 

@@ -1,0 +1,3 @@
+//! Derived geometry: planforms, bodies and airfoil sections, as the DATCOM methods need them.
+
+pub mod section;
