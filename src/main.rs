@@ -52,6 +52,17 @@ enum Command {
         #[arg(long, value_enum, default_value = "json")]
         format: ParseFormat,
     },
+    /// Print the section namelist ($WGSCHR, ...) for an airfoil coordinate file (Selig or
+    /// Lednicer format, unit chord), resampled to chord stations closer at both edges.
+    Airfoil {
+        file: PathBuf,
+        /// Namelist to write: WGSCHR, HTSCHR, VTSCHR or VFSCHR.
+        #[arg(long, default_value = "WGSCHR")]
+        namelist: String,
+        /// Number of chord stations (3 to 50).
+        #[arg(long, default_value_t = 50)]
+        points: usize,
+    },
     /// Run a deck: flight conditions and coefficients.
     Run {
         deck: PathBuf,
@@ -131,10 +142,52 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
     }
 }
 
+fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
+    let name = namelist.to_ascii_uppercase();
+    if !["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"].contains(&name.as_str()) {
+        eprintln!("datcom-rs: --namelist {namelist}: expected WGSCHR, HTSCHR, VTSCHR or VFSCHR");
+        return ExitCode::from(2);
+    }
+    let text = match std::fs::read_to_string(file) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("datcom-rs: cannot read {}: {e}", file.display());
+            return ExitCode::from(2);
+        }
+    };
+    let input = datcom::geometry::airfoil_file::read(&text)
+        .and_then(|a| a.to_section_input(points).map(|s| (a.name, s)));
+    match input {
+        Ok((airfoil, s)) => {
+            let mut out = std::io::stdout().lock();
+            let _ = writeln!(
+                out,
+                "* {airfoil}: {points} stations from {}",
+                file.display()
+            );
+            let _ = write!(
+                out,
+                "{}",
+                datcom::geometry::airfoil_file::namelist_text(&name, &s)
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("datcom-rs: {}: {e}", file.display());
+            ExitCode::from(1)
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Check { decks, notes } => check(&decks, notes),
+        Command::Airfoil {
+            file,
+            namelist,
+            points,
+        } => airfoil(&file, &namelist, points),
         Command::Parse { deck, format } => {
             let d = match load(&deck) {
                 Ok(d) => d,

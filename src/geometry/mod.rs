@@ -1,5 +1,6 @@
 //! Derived geometry: planforms, bodies and airfoil sections, as the DATCOM methods need them.
 
+pub mod airfoil_file;
 pub mod body;
 pub mod planform;
 pub mod section;
