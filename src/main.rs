@@ -29,6 +29,12 @@ enum ParseFormat {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum CompareFormat {
+    Text,
+    Json,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum RunFormat {
     Text,
     Json,
@@ -62,6 +68,20 @@ enum Command {
         /// Number of chord stations (3 to 50).
         #[arg(long, default_value_t = 50)]
         points: usize,
+    },
+    /// Read a listing of the original program (for006.dat) into the JSON of `run`.
+    Import {
+        listing: PathBuf,
+        #[arg(long, value_enum, default_value = "json")]
+        format: ParseFormat,
+    },
+    /// Agreement between two results, coefficient by coefficient, worst first. Each of OURS
+    /// and REFERENCE is a deck (run here), a JSON of `run` or `import`, or a listing.
+    Compare {
+        ours: PathBuf,
+        reference: PathBuf,
+        #[arg(long, value_enum, default_value = "text")]
+        format: CompareFormat,
     },
     /// Run a deck: flight conditions and coefficients.
     Run {
@@ -142,6 +162,42 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
     }
 }
 
+/// A result in the JSON shape of `run`, from a deck, a JSON file or a listing.
+fn results_json(path: &Path) -> Result<serde_json::Value, ExitCode> {
+    let bytes = std::fs::read(path).map_err(|e| {
+        eprintln!("datcom-rs: cannot read {}: {e}", path.display());
+        ExitCode::from(2)
+    })?;
+    let text = String::from_utf8_lossy(&bytes);
+    let name = path.display().to_string();
+    let json = if text.trim_start().starts_with('{') {
+        text.into_owned()
+    } else if text.contains("AUTOMATED STABILITY AND CONTROL METHODS") {
+        datcom::report::json::listing_to_string(&text, &name)
+    } else {
+        let deck = datcom::read_deck(&text, &name);
+        datcom::report::json::to_string(&datcom::run(&deck))
+    };
+    serde_json::from_str(&json).map_err(|e| {
+        eprintln!("datcom-rs: {}: not a result: {e}", path.display());
+        ExitCode::from(2)
+    })
+}
+
+fn compare(ours: &Path, reference: &Path, format: CompareFormat) -> ExitCode {
+    let (a, b) = match (results_json(ours), results_json(reference)) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(c), _) | (_, Err(c)) => return c,
+    };
+    let rows = datcom::report::compare::compare(&a, &b);
+    let text = match format {
+        CompareFormat::Text => datcom::report::compare::to_text(&rows),
+        CompareFormat::Json => serde_json::to_string_pretty(&rows).unwrap_or_default(),
+    };
+    let _ = write!(std::io::stdout().lock(), "{text}");
+    ExitCode::SUCCESS
+}
+
 fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
     let name = namelist.to_ascii_uppercase();
     if !["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"].contains(&name.as_str()) {
@@ -183,6 +239,30 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Check { decks, notes } => check(&decks, notes),
+        Command::Import { listing, format } => {
+            let text = match std::fs::read(&listing) {
+                Ok(b) => String::from_utf8_lossy(&b).into_owned(),
+                Err(e) => {
+                    eprintln!("datcom-rs: cannot read {}: {e}", listing.display());
+                    return ExitCode::from(2);
+                }
+            };
+            match format {
+                ParseFormat::Json => {
+                    let json = datcom::report::json::listing_to_string(
+                        &text,
+                        &listing.display().to_string(),
+                    );
+                    let _ = writeln!(std::io::stdout().lock(), "{json}");
+                }
+            }
+            ExitCode::SUCCESS
+        }
+        Command::Compare {
+            ours,
+            reference,
+            format,
+        } => compare(&ours, &reference, format),
         Command::Airfoil {
             file,
             namelist,

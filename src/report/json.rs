@@ -79,12 +79,12 @@ pub struct ReferenceJson {
 
 #[derive(Serialize)]
 pub struct UnitsJson {
-    pub length: &'static str,
-    pub velocity: &'static str,
-    pub pressure: &'static str,
-    pub temperature: &'static str,
-    pub reynolds_per_length: &'static str,
-    pub area: &'static str,
+    pub length: String,
+    pub velocity: String,
+    pub pressure: String,
+    pub temperature: String,
+    pub reynolds_per_length: String,
+    pub area: String,
 }
 
 #[derive(Serialize)]
@@ -158,12 +158,12 @@ pub fn view(results: &Results) -> ResultsJson {
                     case: c.number,
                     caseid: c.caseid.clone(),
                     units: UnitsJson {
-                        length: unit_label(c.dim, D::Length),
-                        velocity: unit_label(c.dim, D::Velocity),
-                        pressure: unit_label(c.dim, D::Pressure),
-                        temperature: unit_label(c.dim, D::Temperature),
-                        reynolds_per_length: unit_label(c.dim, D::PerLength),
-                        area: unit_label(c.dim, D::Area),
+                        length: unit_label(c.dim, D::Length).into(),
+                        velocity: unit_label(c.dim, D::Velocity).into(),
+                        pressure: unit_label(c.dim, D::Pressure).into(),
+                        temperature: unit_label(c.dim, D::Temperature).into(),
+                        reynolds_per_length: unit_label(c.dim, D::PerLength).into(),
+                        area: unit_label(c.dim, D::Area).into(),
                     },
                     reference: ReferenceJson {
                         area,
@@ -185,5 +185,111 @@ pub fn to_string(results: &Results) -> String {
     // Serialising plain structs of numbers and strings cannot fail; non-finite numbers become
     // null, and the library does not produce them (see the no-NaN tests).
     serde_json::to_string_pretty(&view(results))
+        .unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+}
+
+fn listed_column(t: &Option<super::legacy::Table>, name: &str) -> Vec<Option<f64>> {
+    t.as_ref()
+        .and_then(|t| t.column(name))
+        .map(<[Option<f64>]>::to_vec)
+        .unwrap_or_default()
+}
+
+/// The JSON of a listing of the original program, in the shape of `run`'s (values in the
+/// listing's units, derivatives in its unit).
+pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJson {
+    ResultsJson {
+        file: file.to_string(),
+        cases: cases
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let unit = |k: usize| c.units.get(k).cloned().unwrap_or_default();
+                let first = c.conditions.first();
+                let field =
+                    |name: &str| first.and_then(|k| k.row.field(name)).and_then(|f| f.value);
+                CaseJson {
+                    case: i + 1,
+                    caseid: c.caseid.clone(),
+                    units: UnitsJson {
+                        length: unit(0),
+                        velocity: unit(1),
+                        pressure: unit(2),
+                        temperature: unit(3),
+                        reynolds_per_length: unit(4),
+                        area: unit(5),
+                    },
+                    reference: ReferenceJson {
+                        area: field("area"),
+                        longitudinal: field("longitudinal"),
+                        lateral: field("lateral"),
+                        xcg: field("xcg").unwrap_or(0.0),
+                        zcg: field("zcg").unwrap_or(0.0),
+                    },
+                    conditions: c
+                        .conditions
+                        .iter()
+                        .map(|k| {
+                            let f = |name: &str| k.row.field(name).and_then(|f| f.value);
+                            let s = &k.statics;
+                            let d = &k.dynamics;
+                            let alpha = |t: &Option<super::legacy::Table>| -> Vec<f64> {
+                                listed_column(t, "ALPHA").into_iter().flatten().collect()
+                            };
+                            ConditionJson {
+                                condition: ConditionView {
+                                    mach: f("mach").unwrap_or(0.0),
+                                    altitude: f("altitude"),
+                                    velocity: f("velocity"),
+                                    pressure: f("pressure"),
+                                    temperature: f("temperature"),
+                                    reynolds_per_length: f("reynolds_per_length").unwrap_or(0.0),
+                                },
+                                configuration: k.configuration.clone(),
+                                deriv_unit: if k.deriv_per_radian {
+                                    DerivUnit::Rad
+                                } else {
+                                    DerivUnit::Deg
+                                },
+                                static_coefficients: StaticJson {
+                                    alpha: alpha(s),
+                                    cd: listed_column(s, "CD"),
+                                    cl: listed_column(s, "CL"),
+                                    cm: listed_column(s, "CM"),
+                                    cn: listed_column(s, "CN"),
+                                    ca: listed_column(s, "CA"),
+                                    xcp: listed_column(s, "XCP"),
+                                    cla: listed_column(s, "CLA"),
+                                    cma: listed_column(s, "CMA"),
+                                    cyb: listed_column(s, "CYB"),
+                                    cnb: listed_column(s, "CNB"),
+                                    clb: listed_column(s, "CLB"),
+                                },
+                                dynamic: d.as_ref().map(|_| DynamicJson {
+                                    alpha: alpha(d),
+                                    clq: listed_column(d, "CLQ"),
+                                    cmq: listed_column(d, "CMQ"),
+                                    clad: listed_column(d, "CLAD"),
+                                    cmad: listed_column(d, "CMAD"),
+                                    clp: listed_column(d, "CLP"),
+                                    cyp: listed_column(d, "CYP"),
+                                    cnp: listed_column(d, "CNP"),
+                                    cnr: listed_column(d, "CNR"),
+                                    clr: listed_column(d, "CLR"),
+                                }),
+                            }
+                        })
+                        .collect(),
+                    warnings: Vec::new(),
+                }
+            })
+            .collect(),
+    }
+}
+
+/// Pretty JSON text of a listing of the original program.
+pub fn listing_to_string(listing: &str, file: &str) -> String {
+    let cases = super::legacy::read_listing(listing);
+    serde_json::to_string_pretty(&from_listing(&cases, file))
         .unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
 }

@@ -120,3 +120,214 @@ mod tests {
         assert!((last_digit_unit("511.570") - 0.001).abs() < 1e-12);
     }
 }
+
+/// Columns of the static table (CHARACTERISTICS AT ANGLE OF ATTACK AND IN SIDESLIP): name and
+/// the column just past its right edge (fields are right-aligned between edges).
+pub const STATIC_COLUMNS: [(&str, usize); 12] = [
+    ("ALPHA", 7),
+    ("CD", 16),
+    ("CL", 25),
+    ("CM", 35),
+    ("CN", 43),
+    ("CA", 52),
+    ("XCP", 61),
+    ("CLA", 74),
+    ("CMA", 87),
+    ("CYB", 100),
+    ("CNB", 113),
+    ("CLB", 126),
+];
+
+/// Columns of the DYNAMIC DERIVATIVES table, as [`STATIC_COLUMNS`].
+pub const DYNAMIC_COLUMNS: [(&str, usize); 10] = [
+    ("ALPHA", 9),
+    ("CLQ", 22),
+    ("CMQ", 35),
+    ("CLAD", 49),
+    ("CMAD", 62),
+    ("CLP", 75),
+    ("CYP", 88),
+    ("CNP", 101),
+    ("CNR", 114),
+    ("CLR", 127),
+];
+
+/// A table read from a listing: its columns by name, one entry per row (`None`: blank, NDM,
+/// NA or an overflowed field), with the printed text kept for precision.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Table {
+    pub columns: Vec<(String, Vec<Option<f64>>)>,
+    pub texts: Vec<Vec<String>>,
+}
+
+impl Table {
+    pub fn column(&self, name: &str) -> Option<&[Option<f64>]> {
+        self.columns
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.as_slice())
+    }
+}
+
+fn read_table(lines: &[&str], start: usize, columns: &[(&str, usize)]) -> Table {
+    let mut t = Table {
+        columns: columns
+            .iter()
+            .map(|(n, _)| (n.to_string(), Vec::new()))
+            .collect(),
+        texts: Vec::new(),
+    };
+    for l in lines.iter().skip(start) {
+        if l.trim().is_empty() || l.starts_with('0') || l.starts_with('1') {
+            break;
+        }
+        // A row whose angle is not a number (NDM: an angle the deck left unset) is left out.
+        if slice(l, 0, columns[0].1).parse::<f64>().is_err() {
+            continue;
+        }
+        let mut left = 0;
+        let mut texts = Vec::new();
+        for (k, (_, right)) in columns.iter().enumerate() {
+            let text = slice(l, left, *right);
+            left = *right;
+            t.columns[k]
+                .1
+                .push(text.parse::<f64>().ok().filter(|v| v.is_finite()));
+            texts.push(text);
+        }
+        t.texts.push(texts);
+    }
+    t
+}
+
+/// One flight condition and configuration of a listing with its tables.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ListedCondition {
+    pub row: ConditionRow,
+    pub configuration: String,
+    pub deriv_per_radian: bool,
+    pub statics: Option<Table>,
+    pub dynamics: Option<Table>,
+}
+
+/// One case of a listing.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ListedCase {
+    pub caseid: Option<String>,
+    /// Unit names of the FLIGHT CONDITIONS header (FT, FT/SEC, LB/FT**2, DEG R, 1/FT, FT**2).
+    pub units: Vec<String>,
+    pub conditions: Vec<ListedCondition>,
+}
+
+/// Reads the static and dynamic tables of a listing, grouped by case, flight condition and
+/// configuration. A case begins where the original lists its input cards.
+pub fn read_listing(listing: &str) -> Vec<ListedCase> {
+    let lines: Vec<&str> = listing.lines().collect();
+    let mut cases: Vec<ListedCase> = Vec::new();
+    let mut new_case = true;
+    for (i, l) in lines.iter().enumerate() {
+        if l.contains("LIST OF ALL INPUT CARDS FOR THIS CASE") {
+            new_case = true;
+            continue;
+        }
+        if !(l.starts_with('1') && l.contains("AUTOMATED STABILITY AND CONTROL METHODS")) {
+            continue;
+        }
+        let kind = lines.get(i + 1).map_or("", |s| s.trim());
+        let is_static = kind == "CHARACTERISTICS AT ANGLE OF ATTACK AND IN SIDESLIP";
+        let is_dynamic = kind == "DYNAMIC DERIVATIVES";
+        if !(is_static || is_dynamic) {
+            continue;
+        }
+        let configuration = lines.get(i + 2).map_or("", |s| s.trim()).to_string();
+        let caseid = lines
+            .get(i + 3)
+            .map(|s| s.trim())
+            .filter(|s| !s.is_empty())
+            .map(str::to_string);
+        // The FLIGHT CONDITIONS block follows within a few lines.
+        let Some(fc) = (i + 3..(i + 8).min(lines.len()))
+            .find(|&k| lines[k].contains("FLIGHT CONDITIONS") && lines[k].contains("REFERENCE"))
+        else {
+            continue;
+        };
+        let Some(row) = flight_condition_rows(&lines[fc..(fc + 6).min(lines.len())].join("\n"))
+            .into_iter()
+            .next()
+        else {
+            continue;
+        };
+        let row = ConditionRow {
+            line: fc + 5,
+            page: kind.to_string(),
+            ..row
+        };
+        let header = (fc + 5..(fc + 12).min(lines.len())).find(|&k| {
+            let h = lines[k];
+            h.starts_with('0') && h.contains("ALPHA") && (h.contains(" CD ") || h.contains("CLQ"))
+        });
+        let Some(header) = header else { continue };
+        let per_radian = lines[fc + 5..header]
+            .iter()
+            .any(|h| h.contains("PER RADIAN"));
+        let table = read_table(
+            &lines,
+            header + 2,
+            if is_static {
+                &STATIC_COLUMNS
+            } else {
+                &DYNAMIC_COLUMNS
+            },
+        );
+        if new_case || cases.is_empty() {
+            cases.push(ListedCase::default());
+            new_case = false;
+        }
+        let case = cases.last_mut().expect("a case was just pushed");
+        if case.caseid.is_none() {
+            case.caseid = caseid;
+        }
+        if case.units.is_empty() {
+            case.units = lines
+                .get(fc + 3)
+                .map(|u| u.split_whitespace().map(str::to_string).collect())
+                .unwrap_or_default();
+        }
+        let same = |c: &ListedCondition| {
+            c.configuration == configuration
+                && c.row
+                    .fields
+                    .iter()
+                    .map(|f| &f.text)
+                    .eq(row.fields.iter().map(|f| &f.text))
+        };
+        let idx = match case.conditions.iter().position(|c| {
+            same(c)
+                && if is_static {
+                    c.statics.is_none()
+                } else {
+                    c.dynamics.is_none()
+                }
+        }) {
+            Some(k) => k,
+            None => {
+                case.conditions.push(ListedCondition {
+                    row,
+                    configuration: configuration.clone(),
+                    deriv_per_radian: per_radian,
+                    statics: None,
+                    dynamics: None,
+                });
+                case.conditions.len() - 1
+            }
+        };
+        let c = &mut case.conditions[idx];
+        if is_static {
+            c.statics = Some(table);
+            c.deriv_per_radian = per_radian;
+        } else {
+            c.dynamics = Some(table);
+        }
+    }
+    cases
+}

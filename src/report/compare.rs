@@ -1,0 +1,193 @@
+//! Coefficient-by-coefficient agreement between two results in the JSON shape of `run` (ours,
+//! or a listing of the original read by [`super::legacy`]), number by number.
+//!
+//! A number agrees when it is within max(2 %, one unit in the last digit the original prints
+//! for that column) of the reference: F9.3 for CD, CL, CN, CA, XCP; F9.4 for CM; three
+//! decimals of the mantissa for derivatives (E format). This is the measure the method issues
+//! use.
+
+use serde::Serialize;
+use serde_json::Value;
+
+/// Relative agreement accepted for any number.
+pub const RELATIVE: f64 = 0.02;
+
+/// One unit in the last digit the original prints for `column` at value `v`.
+pub fn printed_unit(column: &str, v: f64) -> f64 {
+    match column {
+        "CD" | "CL" | "CN" | "CA" | "XCP" => 1e-3,
+        "CM" => 1e-4,
+        _ => {
+            if v == 0.0 {
+                1e-3
+            } else {
+                10f64.powi(v.abs().log10().floor() as i32 - 3)
+            }
+        }
+    }
+}
+
+/// Whether `ours` agrees with `reference` for `column`.
+pub fn agrees(column: &str, ours: f64, reference: f64) -> bool {
+    let tol = (RELATIVE * reference.abs()).max(printed_unit(column, reference));
+    (ours - reference).abs() <= tol * (1.0 + 1e-9)
+}
+
+/// Agreement of one coefficient.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ColumnAgreement {
+    pub coefficient: String,
+    /// Numbers both sides have.
+    pub compared: usize,
+    pub agreeing: usize,
+    /// Numbers the reference has and we do not.
+    pub missing: usize,
+    /// Largest difference, where: (|ours − reference|, case, condition, alpha, ours, reference).
+    pub worst: Option<Worst>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Worst {
+    pub difference: f64,
+    pub case: usize,
+    pub condition: usize,
+    pub alpha: f64,
+    pub ours: f64,
+    pub reference: f64,
+}
+
+impl ColumnAgreement {
+    pub fn fraction(&self) -> f64 {
+        if self.compared + self.missing == 0 {
+            1.0
+        } else {
+            self.agreeing as f64 / (self.compared + self.missing) as f64
+        }
+    }
+}
+
+const STATIC: [&str; 11] = [
+    "CD", "CL", "CM", "CN", "CA", "XCP", "CLA", "CMA", "CYB", "CNB", "CLB",
+];
+const DYNAMIC: [&str; 9] = [
+    "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
+];
+
+fn numbers(v: &Value) -> Vec<Option<f64>> {
+    v.as_array()
+        .map(|a| a.iter().map(Value::as_f64).collect())
+        .unwrap_or_default()
+}
+
+/// Compares every coefficient of `ours` with `reference` (both in the JSON shape of `run`),
+/// case by case and condition by condition in order; worst agreement first.
+pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
+    let mut out: Vec<ColumnAgreement> = STATIC
+        .iter()
+        .chain(DYNAMIC.iter())
+        .map(|c| ColumnAgreement {
+            coefficient: c.to_string(),
+            compared: 0,
+            agreeing: 0,
+            missing: 0,
+            worst: None,
+        })
+        .collect();
+    let empty = Vec::new();
+    let cases = |v: &Value| v["cases"].as_array().cloned().unwrap_or_default();
+    for (ci, (a, b)) in cases(ours).iter().zip(cases(reference).iter()).enumerate() {
+        let ca = a["conditions"].as_array().unwrap_or(&empty);
+        let cb = b["conditions"].as_array().unwrap_or(&empty);
+        for (ki, (x, y)) in ca.iter().zip(cb).enumerate() {
+            for (block, names) in [("static", &STATIC[..]), ("dynamic", &DYNAMIC[..])] {
+                let alpha = numbers(&y[block]["alpha"]);
+                for name in names {
+                    let col = out
+                        .iter_mut()
+                        .find(|c| c.coefficient == *name)
+                        .expect("every coefficient has an entry");
+                    let ov = numbers(&x[block][name]);
+                    for (i, r) in numbers(&y[block][name]).iter().enumerate() {
+                        let Some(r) = r else { continue };
+                        match ov.get(i).copied().flatten() {
+                            None => col.missing += 1,
+                            Some(o) => {
+                                col.compared += 1;
+                                if agrees(name, o, *r) {
+                                    col.agreeing += 1;
+                                }
+                                let d = (o - r).abs();
+                                if col.worst.as_ref().is_none_or(|w| d > w.difference) {
+                                    col.worst = Some(Worst {
+                                        difference: d,
+                                        case: ci + 1,
+                                        condition: ki + 1,
+                                        alpha: alpha.get(i).copied().flatten().unwrap_or(f64::NAN),
+                                        ours: o,
+                                        reference: *r,
+                                    });
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    out.retain(|c| c.compared + c.missing > 0);
+    out.sort_by(|a, b| a.fraction().total_cmp(&b.fraction()));
+    out
+}
+
+/// The agreement as a text table.
+pub fn to_text(rows: &[ColumnAgreement]) -> String {
+    let mut s = String::from(
+        "coefficient  agree/total   fraction  missing  worst |ours - reference| (case, condition, alpha: ours vs reference)\n",
+    );
+    for r in rows {
+        let worst = r.worst.as_ref().map_or(String::new(), |w| {
+            format!(
+                "{:.4e} (case {}, condition {}, alpha {}: {} vs {})",
+                w.difference, w.case, w.condition, w.alpha, w.ours, w.reference
+            )
+        });
+        s.push_str(&format!(
+            "{:<12} {:>5}/{:<7} {:>8.1}% {:>8}  {}\n",
+            r.coefficient,
+            r.agreeing,
+            r.compared + r.missing,
+            100.0 * r.fraction(),
+            r.missing,
+            worst
+        ));
+    }
+    if rows.is_empty() {
+        s.push_str("(no coefficient values to compare)\n");
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tolerance_is_two_percent_or_one_printed_unit() {
+        assert!(agrees("CL", 0.1005, 0.100));
+        assert!(!agrees("CL", 0.1035, 0.100));
+        assert!(agrees("CD", 0.0205, 0.020), "one unit of F9.3 is 0.001");
+        assert!(agrees("CM", 0.00015, 0.0001));
+        assert!(agrees("CLA", 5.598, 5.6));
+        assert!(!agrees("CLA", 5.8, 5.6));
+    }
+
+    #[test]
+    fn counts_and_worst() {
+        let a: Value = serde_json::from_str(r#"{"cases":[{"conditions":[{"static":{"alpha":[0,2],"CL":[0.1,0.3]},"dynamic":null}]}]}"#).unwrap();
+        let b: Value = serde_json::from_str(r#"{"cases":[{"conditions":[{"static":{"alpha":[0,2],"CL":[0.1,0.2]},"dynamic":null}]}]}"#).unwrap();
+        let r = compare(&a, &b);
+        assert_eq!(r.len(), 1);
+        assert_eq!((r[0].agreeing, r[0].compared), (1, 2));
+        assert_eq!(r[0].worst.as_ref().unwrap().alpha, 2.0);
+    }
+}
