@@ -39,6 +39,8 @@ enum RunFormat {
     Text,
     Json,
     Csv,
+    /// Pages in the original program's layout (for existing listing readers).
+    For006,
 }
 
 #[derive(Subcommand)]
@@ -309,6 +311,7 @@ fn main() -> ExitCode {
                 RunFormat::Text => (datcom::report::text::to_string(&results), "txt"),
                 RunFormat::Json => (datcom::report::json::to_string(&results), "json"),
                 RunFormat::Csv => (datcom::report::csv::to_string(&results), "csv"),
+                RunFormat::For006 => (datcom::report::for006::to_string(&results), "out"),
             };
             let code = emit(&text, &deck, ext, output.as_deref());
             if code == ExitCode::SUCCESS && d.has_errors() {

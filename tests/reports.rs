@@ -113,3 +113,70 @@ fn csv_has_a_row_per_condition_and_angle() {
         lines[1]
     );
 }
+
+/// `--format for006` read back by our listing importer gives our numbers to the printed
+/// precision (F formats: half a unit of the last decimal; E formats: 4 significant digits).
+#[test]
+fn for006_pages_read_back_to_our_numbers() {
+    let mut r = example();
+    // Every column filled with a distinct value so that a misplaced column is caught.
+    for case in &mut r.cases {
+        for c in &mut case.conditions {
+            let n = c.alpha_deg.len();
+            let val = |k: usize| {
+                (0..n)
+                    .map(|i| Some(0.01 * (k as f64 + 1.0) + 0.001 * i as f64))
+                    .collect::<Vec<_>>()
+            };
+            let s = &mut c.static_coefficients;
+            for (k, col) in [
+                &mut s.cd, &mut s.cl, &mut s.cm, &mut s.cn, &mut s.ca, &mut s.xcp, &mut s.cla,
+                &mut s.cma, &mut s.cyb, &mut s.cnb, &mut s.clb,
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                *col = val(k);
+            }
+            if let Some(d) = &mut c.dynamic {
+                for (k, col) in [
+                    &mut d.clq,
+                    &mut d.cmq,
+                    &mut d.clad,
+                    &mut d.cmad,
+                    &mut d.clp,
+                    &mut d.cyp,
+                    &mut d.cnp,
+                    &mut d.cnr,
+                    &mut d.clr,
+                ]
+                .into_iter()
+                .enumerate()
+                {
+                    *col = val(20 + k);
+                }
+            }
+        }
+    }
+    let listing = datcom::report::for006::to_string(&r);
+    let back = legacy::read_listing(&listing);
+    assert_eq!(back.len(), 1);
+    assert_eq!(back[0].conditions.len(), 4);
+    let c = &r.cases[0].conditions[0];
+    let b = &back[0].conditions[0];
+    let st = b.statics.as_ref().unwrap();
+    let cl = st.column("CL").unwrap();
+    let cla = st.column("CLA").unwrap();
+    for i in 0..c.alpha_deg.len() {
+        let ours_cl = c.static_coefficients.cl[i].unwrap();
+        assert!((cl[i].unwrap() - ours_cl).abs() <= 0.0005 + 1e-12, "CL {i}");
+        let ours_cla = c.static_coefficients.cla[i].unwrap();
+        assert!(
+            (cla[i].unwrap() - ours_cla).abs() <= 0.5e-3 * ours_cla.abs() + 1e-12,
+            "CLA {i}"
+        );
+    }
+    let dy = b.dynamics.as_ref().unwrap();
+    let clr = dy.column("CLR").unwrap();
+    assert!((clr[0].unwrap() - c.dynamic.as_ref().unwrap().clr[0].unwrap()).abs() < 1e-6);
+}

@@ -6,6 +6,7 @@
 
 pub mod compare;
 pub mod csv;
+pub mod for006;
 pub mod json;
 pub mod legacy;
 pub mod text;
