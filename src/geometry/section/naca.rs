@@ -413,10 +413,24 @@ mod tests {
     }
 
     #[test]
+    fn a_third_digit_nacas_does_not_define_is_the_standard_line_with_a_warning() {
+        let odd = section(NacaSeries::Five, "65415");
+        let standard = section(NacaSeries::Five, "65015");
+        assert_eq!(odd.mean_line, standard.mean_line);
+        assert_eq!(odd.title, "NACA 65415");
+        assert_eq!(odd.warnings.len(), 1);
+        assert!(
+            odd.warnings[0].contains("third digit 4"),
+            "{:?}",
+            odd.warnings
+        );
+        assert!(standard.warnings.is_empty());
+    }
+
+    #[test]
     fn undefined_designations_are_refused_with_the_reason() {
         use NacaSeries::*;
         for (series, text, why) in [
-            (Five, "65415", "third digit 4 is not defined"),
             (Five, "27012", "second digit) 7 is not defined"),
             (Five, "21112", "second digit) 1 is not defined"),
             (Four, "4012", "second digit) 0 is not defined"),
