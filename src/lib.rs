@@ -26,6 +26,7 @@ pub mod conditions;
 pub mod deck;
 pub mod error;
 pub mod geometry;
+pub mod methods;
 pub mod report;
 pub mod results;
 

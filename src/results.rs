@@ -4,7 +4,11 @@
 
 use crate::case::{Case, Deck, Planform};
 use crate::conditions::FlightCondition;
+use crate::deck::cards::Surface;
 use crate::deck::cards::{DerivUnit, Dim};
+use crate::geometry::section::{section_for, SectionCoordinates};
+use crate::methods::section::surface_section;
+use crate::methods::section::{section_characteristics, SectionCharacteristics};
 
 /// Static coefficients against angle of attack (columns of the original's static page).
 /// Derivatives are per radian. `None` where there is no value.
@@ -98,6 +102,16 @@ pub struct ConditionResults {
     pub dynamic: Option<DynamicDerivatives>,
 }
 
+/// A lifting surface's airfoil section: its coordinate table and characteristics (the
+/// original's SECTION DEFINITION pages).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SectionResult {
+    pub surface: Surface,
+    pub coordinates: Option<SectionCoordinates>,
+    pub characteristics: Option<SectionCharacteristics>,
+    pub warnings: Vec<String>,
+}
+
 /// One case's results.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseResults {
@@ -108,6 +122,8 @@ pub struct CaseResults {
     /// SYNTHS SCALE: the geometry inside is the deck's times this factor.
     pub scale: f64,
     pub reference: ReferenceDimensions,
+    /// Sections of the wing, horizontal tail, vertical tail and ventral fin that have one.
+    pub sections: Vec<SectionResult>,
     pub conditions: Vec<ConditionResults>,
     pub warnings: Vec<String>,
 }
@@ -236,9 +252,69 @@ pub fn run_case(case: &Case) -> CaseResults {
         deriv: case.deriv,
         scale: case.scale,
         reference: reference(case),
+        sections: sections(case),
         conditions,
         warnings,
     }
+}
+
+/// The section of every surface that has one (coordinates and characteristics), with what
+/// could not be computed said in its warnings.
+fn sections(case: &Case) -> Vec<SectionResult> {
+    let surfaces = [
+        Surface::Wing,
+        Surface::HorizontalTail,
+        Surface::VerticalTail,
+        Surface::VentralFin,
+    ];
+    surfaces
+        .into_iter()
+        .filter_map(|surface| {
+            let mut warnings = Vec::new();
+            let coordinates = match section_for(case, surface)? {
+                Ok(c) => Some(c),
+                Err(e) => {
+                    warnings.push(format!("{} section: {e}", surface.name()));
+                    None
+                }
+            };
+            let characteristics = match surface_section(case, surface) {
+                None => None,
+                Some(Err(e)) => {
+                    warnings.push(format!("{} section: {e}", surface.name()));
+                    None
+                }
+                Some(Ok(s)) => {
+                    warnings.extend(
+                        s.warnings
+                            .iter()
+                            .map(|w| format!("{} section: {w}", surface.name())),
+                    );
+                    match section_characteristics(&s.shape, &s.conditions, &s.overrides) {
+                        Ok(c) => {
+                            warnings.extend(
+                                c.warnings
+                                    .iter()
+                                    .map(|w| format!("{} section: {w}", surface.name())),
+                            );
+                            Some(c)
+                        }
+                        Err(e) => {
+                            warnings
+                                .push(format!("{} section characteristics: {e}", surface.name()));
+                            None
+                        }
+                    }
+                }
+            };
+            Some(SectionResult {
+                surface,
+                coordinates,
+                characteristics,
+                warnings,
+            })
+        })
+        .collect()
 }
 
 /// Runs every case of a deck.

@@ -133,6 +133,7 @@ pub fn to_string(results: &Results) -> String {
             "1          THE FOLLOWING IS A LIST OF ALL INPUT CARDS FOR THIS CASE."
         );
         let _ = writeln!(out, "0");
+        out.push_str(&super::text::section_pages(case));
         for c in &case.conditions {
             static_page(&mut out, case, c);
             dynamic_page(&mut out, case, c);

@@ -87,12 +87,67 @@ pub struct UnitsJson {
     pub area: String,
 }
 
+/// A section's lift-curve slope and aerodynamic centre at one Mach number.
+#[derive(Serialize)]
+pub struct SectionMachJson {
+    pub mach: f64,
+    pub lift_curve_slope_per_deg: Option<f64>,
+    pub xac: Option<f64>,
+}
+
+/// A section's characteristics (the SECTION DEFINITION page); null where not computed.
+#[derive(Serialize)]
+pub struct SectionJson {
+    pub title: Option<String>,
+    pub ideal_alpha_deg: Option<f64>,
+    pub zero_lift_alpha_deg: Option<f64>,
+    pub ideal_cl: Option<f64>,
+    pub cm0: Option<f64>,
+    pub cla_mach0_per_deg: Option<f64>,
+    pub le_radius: Option<f64>,
+    pub max_thickness: Option<f64>,
+    pub delta_y: Option<f64>,
+    pub per_mach: Vec<SectionMachJson>,
+    pub warnings: Vec<String>,
+}
+
+fn section_json(s: &crate::results::SectionResult) -> SectionJson {
+    let per_deg = std::f64::consts::PI / 180.0;
+    let k = s.characteristics.as_ref();
+    let mut per_mach: Vec<SectionMachJson> = Vec::new();
+    for m in k.map(|k| k.per_mach.as_slice()).unwrap_or_default() {
+        if per_mach.iter().any(|p| p.mach == m.mach) {
+            continue;
+        }
+        per_mach.push(SectionMachJson {
+            mach: m.mach,
+            lift_curve_slope_per_deg: m.cla_per_rad.map(|v| v * per_deg),
+            xac: m.xac,
+        });
+    }
+    SectionJson {
+        title: s.coordinates.as_ref().map(|c| c.title.clone()),
+        ideal_alpha_deg: k.map(|k| k.ideal_alpha_deg),
+        zero_lift_alpha_deg: k.map(|k| k.zero_lift_alpha_deg),
+        ideal_cl: k.map(|k| k.ideal_cl),
+        cm0: k.map(|k| k.cm0),
+        cla_mach0_per_deg: k.map(|k| k.cla_mach0_per_rad * per_deg),
+        le_radius: k.map(|k| k.leading_edge_radius),
+        max_thickness: k.map(|k| k.max_thickness),
+        delta_y: k.map(|k| k.delta_y_percent),
+        per_mach,
+        warnings: s.warnings.clone(),
+    }
+}
+
 #[derive(Serialize)]
 pub struct CaseJson {
     pub case: usize,
     pub caseid: Option<String>,
     pub units: UnitsJson,
     pub reference: ReferenceJson,
+    /// By surface name: WING, HORIZONTAL TAIL, VERTICAL TAIL, VENTRAL FIN.
+    pub sections: std::collections::BTreeMap<String, SectionJson>,
     pub conditions: Vec<ConditionJson>,
     pub warnings: Vec<String>,
 }
@@ -172,6 +227,11 @@ pub fn view(results: &Results) -> ResultsJson {
                         xcg,
                         zcg,
                     },
+                    sections: c
+                        .sections
+                        .iter()
+                        .map(|s| (s.surface.name().to_string(), section_json(s)))
+                        .collect(),
                     conditions: c.conditions.iter().map(|k| condition(k, c)).collect(),
                     warnings: c.warnings.clone(),
                 }
@@ -219,6 +279,7 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                         reynolds_per_length: unit(4),
                         area: unit(5),
                     },
+                    sections: Default::default(),
                     reference: ReferenceJson {
                         area: field("area"),
                         longitudinal: field("longitudinal"),

@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use super::{condition_view, derivative_view, reference_view};
 use crate::case::units::unit_label;
-use crate::deck::cards::DerivUnit;
+use crate::deck::cards::{DerivUnit, Surface};
 use crate::deck::schema::Dimension as D;
 use crate::results::{CaseResults, ConditionResults, Results};
 
@@ -142,6 +142,7 @@ fn table(case: &CaseResults, c: &ConditionResults) -> String {
 pub fn to_string(results: &Results) -> String {
     let mut s = String::new();
     for case in &results.cases {
+        s.push_str(&section_pages(case));
         for c in &case.conditions {
             let _ = writeln!(
                 s,
@@ -163,6 +164,134 @@ pub fn to_string(results: &Results) -> String {
         }
     }
     s
+}
+
+/// Page title line of the original.
+const PAGE_TITLE: &str =
+    "1                             AUTOMATED STABILITY AND CONTROL METHODS PER APRIL 1976 VERSION OF DATCOM";
+
+/// Right edges of the coordinate table's columns (F.5 fields).
+const COORDINATE_EDGES: [usize; 7] = [16, 35, 53, 71, 92, 110, 124];
+
+/// A `LABEL =   value` line of the characteristics page: the label right-aligned to the `=`
+/// in column 56, the value F10.5, then the unit.
+fn labelled(first: bool, label: &str, value: f64, unit: &str) -> String {
+    let lead = if first { "0" } else { " " };
+    format!(
+        "{lead}{:>55}={}{unit}",
+        format!("{label} "),
+        fortran_f(value, 5, 10)
+    )
+}
+
+/// The SECTION DEFINITION pages of a case (coordinate table, then characteristics), as the
+/// original prints them before the flight conditions.
+pub fn section_pages(case: &CaseResults) -> String {
+    let mut s = String::new();
+    for section in &case.sections {
+        let name = format!("{} SECTION DEFINITION", section.surface.name());
+        // The original's indents (AIRFOL formats): the surface line, and the designation line.
+        let indent = match section.surface {
+            Surface::Wing => 56,
+            Surface::HorizontalTail => 51,
+            Surface::VerticalTail => 52,
+            Surface::VentralFin => 53,
+        };
+        let name = format!("{:indent$}{name}", "");
+        if let Some(c) = &section.coordinates {
+            let _ = writeln!(s, "{PAGE_TITLE}");
+            let _ = writeln!(s, "{name}");
+            let _ = writeln!(s, "{:62}{}", "", c.title);
+            if let Some(sub) = &c.subtitle {
+                let _ = writeln!(s, "{:62}{sub}", "");
+            }
+            let _ = writeln!(
+                s,
+                "     UPPER ABSCISSA     UPPER ORDINATE     LOWER ABSCISSA     LOWER ORDINATE      X-FRACTION CHORD    MEAN LINE    THICKNESS"
+            );
+            for r in &c.rows {
+                let values = [
+                    r.upper_x,
+                    r.upper_y,
+                    r.lower_x,
+                    r.lower_y,
+                    r.x,
+                    r.mean,
+                    r.thickness,
+                ];
+                let mut line = String::new();
+                let mut left = 0;
+                for (v, right) in values.iter().zip(COORDINATE_EDGES) {
+                    line.push_str(&fortran_f(*v, 5, right - left));
+                    left = right;
+                }
+                let _ = writeln!(s, "{line}");
+            }
+        }
+        if let Some(k) = &section.characteristics {
+            let _ = writeln!(s, "{PAGE_TITLE}");
+            let _ = writeln!(s, "{name}");
+            let per_deg = std::f64::consts::PI / 180.0;
+            let lines = [
+                ("IDEAL ANGLE OF ATTACK", k.ideal_alpha_deg, " DEG."),
+                ("ZERO LIFT ANGLE OF ATTACK", k.zero_lift_alpha_deg, " DEG."),
+                ("IDEAL LIFT COEFFICIENT", k.ideal_cl, ""),
+                ("ZERO LIFT PITCHING MOMENT COEFFICIENT", k.cm0, ""),
+                (
+                    "MACH ZERO LIFT-CURVE-SLOPE",
+                    k.cla_mach0_per_rad * per_deg,
+                    " /DEG.",
+                ),
+                (
+                    "LEADING EDGE RADIUS",
+                    k.leading_edge_radius,
+                    " FRACTION CHORD",
+                ),
+                (
+                    "MAXIMUM AIRFOIL THICKNESS",
+                    k.max_thickness,
+                    " FRACTION CHORD",
+                ),
+                ("DELTA-Y", k.delta_y_percent, " PERCENT CHORD"),
+            ];
+            for (i, (label, v, unit)) in lines.iter().enumerate() {
+                let _ = writeln!(s, "{}", labelled(i == 0, label, *v, unit));
+                let _ = writeln!(s);
+            }
+            for m in per_mach_lines(k) {
+                let _ = writeln!(s, "{m}");
+            }
+        }
+        for w in &section.warnings {
+            let _ = writeln!(s, " warning: {w}");
+        }
+    }
+    s
+}
+
+/// One line per Mach number (the first condition of each), as the original prints them.
+fn per_mach_lines(k: &crate::methods::section::SectionCharacteristics) -> Vec<String> {
+    let per_deg = std::f64::consts::PI / 180.0;
+    let mut seen: Vec<f64> = Vec::new();
+    let mut out = Vec::new();
+    for m in &k.per_mach {
+        if seen.contains(&m.mach) {
+            continue;
+        }
+        seen.push(m.mach);
+        let slope = m
+            .cla_per_rad
+            .map_or("       NDM".to_string(), |v| fortran_f(v * per_deg, 5, 10));
+        let xac = m
+            .xac
+            .map_or("       NDM".to_string(), |v| fortran_f(v, 5, 10));
+        out.push(format!(
+            "0{:>25}MACH={} LIFT-CURVE-SLOPE ={slope} /DEG.      XAC ={xac}",
+            "",
+            fortran_f(m.mach, 4, 7)
+        ));
+    }
+    out
 }
 
 #[cfg(test)]

@@ -1,0 +1,155 @@
+//! What the section method returns: the values of a SECTION DEFINITION page and the terms
+//! behind them, per-condition values, warnings and errors.
+
+use serde::Serialize;
+
+use super::{ShapeError, MIN_REYNOLDS_NUMBER, REFERENCE_REYNOLDS_NUMBER};
+
+/// Where a Mach number's lift-curve slope comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SlopeSource {
+    /// Weber's compressible method at this Mach number.
+    Computed,
+    /// The Mach number is at or above the crest-critical Mach number: the crest-critical
+    /// slope, and no aerodynamic centre.
+    CrestCritical,
+    /// Given by the user (CLALPA).
+    User,
+    /// Not computed (a warning says why).
+    Failed,
+}
+
+/// Section values at one flight condition.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MachCharacteristics {
+    pub mach: f64,
+    pub source: SlopeSource,
+    /// Lift-curve slope, viscous-corrected, per radian.
+    pub cla_per_rad: Option<f64>,
+    /// Aerodynamic centre, fraction of chord from the leading edge.
+    pub xac: Option<f64>,
+    /// Zero-lift angle at this Mach number, degrees.
+    pub zero_lift_alpha_deg: Option<f64>,
+    /// Reynolds number the viscous correction used.
+    pub reynolds_number: Option<f64>,
+    /// c_lα/(c_lα)theory of the viscous correction.
+    pub cla_ratio: Option<f64>,
+}
+
+/// The crest-critical state.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CrestCritical {
+    /// Free-stream Mach number at which the crest becomes sonic.
+    pub mach: f64,
+    /// Crest location, fraction of chord.
+    pub x: f64,
+    /// Lift-curve slope at the crest-critical Mach number, per radian; `None` when the crest
+    /// becomes critical only at Mach 1 or above.
+    pub cla_per_rad: Option<f64>,
+    /// Some condition is at or above the crest-critical Mach number (the original prints the
+    /// block only then).
+    pub exceeded: bool,
+}
+
+/// What could not be computed as asked, and what was done instead.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum SectionWarning {
+    /// No (valid) Reynolds number for a condition: the reference value was used.
+    ReynoldsNumberMissing { mach: f64 },
+    /// The Reynolds number is below the viscous fit's range: the lowest value was used.
+    ReynoldsNumberLow { mach: f64, reynolds_number: f64 },
+    /// A condition's Mach number is negative or not a number.
+    MachInvalid { mach: f64 },
+    /// Weber's method cannot compute the slope at a Mach number.
+    Failed { mach: f64, reason: String },
+    /// The crest-critical Mach number cannot be found; conditions at Mach 1 or above have no
+    /// slope.
+    CrestNotLocated,
+}
+
+impl std::fmt::Display for SectionWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SectionWarning::ReynoldsNumberMissing { mach } => write!(
+                f,
+                "no Reynolds number for Mach {mach}: the section characteristics use {REFERENCE_REYNOLDS_NUMBER:.0e}"
+            ),
+            SectionWarning::ReynoldsNumberLow {
+                mach,
+                reynolds_number,
+            } => write!(
+                f,
+                "Reynolds number {reynolds_number:.4e} at Mach {mach} is below the airfoil section method's range: section characteristics computed at {MIN_REYNOLDS_NUMBER:.4e}"
+            ),
+            SectionWarning::MachInvalid { mach } => {
+                write!(f, "Mach number {mach} is not valid: no section characteristics")
+            }
+            SectionWarning::Failed { mach, reason } => write!(
+                f,
+                "the airfoil section method cannot compute the lift-curve slope at Mach {mach}: {reason}; give CLALPA for it"
+            ),
+            SectionWarning::CrestNotLocated => write!(
+                f,
+                "the crest (upper-surface point tangent to the flow) cannot be located: no crest-critical Mach number, and no section slope at Mach 1 or above"
+            ),
+        }
+    }
+}
+
+/// Why no section characteristics can be computed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum CharacteristicsError {
+    #[error(transparent)]
+    Shape(#[from] ShapeError),
+    #[error("the leading-edge radius must be a non-negative number; it is {0}")]
+    LeadingEdgeRadius(f64),
+    #[error("the section's Mach-0 characteristics cannot be computed: {0}")]
+    MachZero(String),
+}
+
+/// Everything the original prints on a SECTION DEFINITION page, and the terms behind it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SectionCharacteristics {
+    /// Ideal angle of attack (thin-airfoil theory, or the designation's), degrees.
+    pub ideal_alpha_deg: f64,
+    /// Ideal lift coefficient.
+    pub ideal_cl: f64,
+    /// Zero-lift angle of attack at Mach 0 (Weber's method), degrees.
+    pub zero_lift_alpha_deg: f64,
+    /// Zero-lift angle of the mean line alone by thin-airfoil theory (or the designation's),
+    /// degrees: where the iteration starts.
+    pub thin_airfoil_zero_lift_alpha_deg: f64,
+    /// Zero-lift pitching moment about the quarter chord at Mach 0.
+    pub cm0: f64,
+    /// Lift-curve slope at Mach 0 and Reynolds number [`REFERENCE_REYNOLDS_NUMBER`],
+    /// viscous-corrected, per radian.
+    pub cla_mach0_per_rad: f64,
+    /// Inviscid (Weber) lift-curve slope at Mach 0, per radian.
+    pub cla_mach0_theory_per_rad: f64,
+    /// c_lα/(c_lα)theory at Mach 0.
+    pub cla_ratio_mach0: f64,
+    /// Aerodynamic centre at Mach 0, fraction of chord.
+    pub xac_mach0: f64,
+    /// tan(φ_TE/2) the viscous correction uses.
+    pub tan_half_trailing_edge_angle: f64,
+    /// Leading-edge radius, fraction of chord.
+    pub leading_edge_radius: f64,
+    /// Maximum thickness, fraction of chord (the designation's when it names one).
+    pub max_thickness: f64,
+    /// Station of the largest thickness ordinate, fraction of chord.
+    pub max_thickness_x: f64,
+    /// Largest mean-line ordinate and its station, fractions of chord (0, 0 if none is
+    /// positive).
+    pub max_camber: f64,
+    pub max_camber_x: f64,
+    /// Leading-edge sharpness parameter Δy, percent of chord.
+    pub delta_y_percent: f64,
+    /// One per condition, in the order given.
+    pub per_mach: Vec<MachCharacteristics>,
+    pub crest_critical: Option<CrestCritical>,
+    pub warnings: Vec<SectionWarning>,
+}

@@ -1,0 +1,169 @@
+//! The section geometry the characteristics are computed from, independent of where it comes
+//! from (a NACA designation or the xxSCHR coordinates).
+
+use serde::Serialize;
+
+use super::interpolation::MIN_STATIONS;
+
+/// How the half thickness is read between stations.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum ThicknessReading {
+    /// A smooth piecewise cubic (ordinary round-nosed sections).
+    #[default]
+    Smooth,
+    /// Straight lines between stations (sections with corners: the supersonic double-wedge,
+    /// biconvex and hexagonal families of NACA `S` cards).
+    Linear,
+}
+
+/// Design values a NACA designation fixes for its mean line (1- and 6-series: the design lift
+/// coefficient and the mean line's load parameter `a`). When given, they are the section's
+/// ideal angle, ideal lift coefficient and the start of the zero-lift iteration; otherwise
+/// these come from thin-airfoil theory on the mean-line ordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DesignLift {
+    /// Ideal (design) lift coefficient.
+    pub ideal_cl: f64,
+    /// Ideal angle of attack, degrees.
+    pub ideal_alpha_deg: f64,
+    /// Zero-lift angle of the mean line by thin-airfoil theory, degrees.
+    pub zero_lift_alpha_deg: f64,
+}
+
+/// An airfoil section: ordinates at chordwise stations, as fractions of the chord.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SectionShape {
+    /// Chordwise stations x/c, strictly ascending from 0 to 1.
+    pub x: Vec<f64>,
+    /// Mean-line ordinates z_c/c at the stations (0 at both ends for a section on its chord).
+    pub camber: Vec<f64>,
+    /// Half thickness z_t/c at the stations (0 at both ends).
+    pub half_thickness: Vec<f64>,
+    pub thickness_reading: ThicknessReading,
+    /// Leading-edge radius the designation fixes, fraction of chord.
+    pub leading_edge_radius: Option<f64>,
+    /// Maximum thickness the designation names, fraction of chord.
+    pub max_thickness: Option<f64>,
+    pub design: Option<DesignLift>,
+}
+
+/// Why ordinates do not make a section.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ShapeError {
+    #[error("a section needs at least {min} chordwise stations; {found} given")]
+    TooFewStations { found: usize, min: usize },
+    #[error("the section has {x} stations but {ordinates} {what} ordinates")]
+    Lengths {
+        what: &'static str,
+        x: usize,
+        ordinates: usize,
+    },
+    #[error("{what} {index} is not a finite number ({value})")]
+    NotFinite {
+        what: &'static str,
+        index: usize,
+        value: f64,
+    },
+    #[error("the stations must increase strictly: x({index}) = {value} does not exceed x({}) = {previous}", index - 1)]
+    NotAscending {
+        index: usize,
+        value: f64,
+        previous: f64,
+    },
+    #[error("the stations must run along the chord from 0 to 1; they run from {first} to {last}")]
+    NotChord { first: f64, last: f64 },
+}
+
+/// How far the first and last stations may be from 0 and 1.
+const CHORD_END_TOLERANCE: f64 = 1e-6;
+
+impl SectionShape {
+    /// A section from stations, mean line and half thickness, checked; read smoothly, with no
+    /// designation values.
+    pub fn new(
+        x: Vec<f64>,
+        camber: Vec<f64>,
+        half_thickness: Vec<f64>,
+    ) -> Result<SectionShape, ShapeError> {
+        let shape = SectionShape {
+            x,
+            camber,
+            half_thickness,
+            thickness_reading: ThicknessReading::Smooth,
+            leading_edge_radius: None,
+            max_thickness: None,
+            design: None,
+        };
+        shape.check()?;
+        Ok(shape)
+    }
+
+    /// Checks what the method needs: at least four stations, ascending strictly from 0 to 1,
+    /// finite ordinates of the same count, and finite designation values.
+    pub fn check(&self) -> Result<(), ShapeError> {
+        let n = self.x.len();
+        if n < MIN_STATIONS {
+            return Err(ShapeError::TooFewStations {
+                found: n,
+                min: MIN_STATIONS,
+            });
+        }
+        for (what, v) in [
+            ("mean-line", &self.camber),
+            ("thickness", &self.half_thickness),
+        ] {
+            if v.len() != n {
+                return Err(ShapeError::Lengths {
+                    what,
+                    x: n,
+                    ordinates: v.len(),
+                });
+            }
+        }
+        for (what, v) in [
+            ("station", &self.x),
+            ("mean-line ordinate", &self.camber),
+            ("half thickness", &self.half_thickness),
+        ] {
+            if let Some((i, value)) = v.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+                return Err(ShapeError::NotFinite {
+                    what,
+                    index: i + 1,
+                    value: *value,
+                });
+            }
+        }
+        if let Some(i) = (1..n).find(|&i| self.x[i] <= self.x[i - 1]) {
+            return Err(ShapeError::NotAscending {
+                index: i + 1,
+                value: self.x[i],
+                previous: self.x[i - 1],
+            });
+        }
+        let (first, last) = (self.x[0], self.x[n - 1]);
+        if first.abs() > CHORD_END_TOLERANCE || (last - 1.0).abs() > CHORD_END_TOLERANCE {
+            return Err(ShapeError::NotChord { first, last });
+        }
+        let design = self.design.map_or(vec![], |d| {
+            vec![d.ideal_cl, d.ideal_alpha_deg, d.zero_lift_alpha_deg]
+        });
+        for (what, v) in [
+            ("leading-edge radius", self.leading_edge_radius),
+            ("maximum thickness", self.max_thickness),
+        ]
+        .into_iter()
+        .chain(design.into_iter().map(|d| ("design value", Some(d))))
+        {
+            if let Some(value) = v.filter(|v| !v.is_finite()) {
+                return Err(ShapeError::NotFinite {
+                    what,
+                    index: 1,
+                    value,
+                });
+            }
+        }
+        Ok(())
+    }
+}
