@@ -125,20 +125,7 @@ fn coordinate_pages(listing: &str) -> Vec<Page> {
 }
 
 fn row_numbers(c: &SectionCoordinates) -> Vec<[f64; 7]> {
-    c.rows
-        .iter()
-        .map(|r| {
-            [
-                r.upper_x,
-                r.upper_y,
-                r.lower_x,
-                r.lower_y,
-                r.x,
-                r.mean,
-                r.thickness,
-            ]
-        })
-        .collect()
+    c.rows.iter().map(|r| r.values()).collect()
 }
 
 /// Matched and compared numbers, and the first misses for the message.

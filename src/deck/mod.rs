@@ -917,6 +917,21 @@ impl<'a> Reader<'a> {
     /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...), in
     /// both directions, and experimental-data namelists against the Mach numbers.
     fn check_counts(&mut self) {
+        let mismatch =
+            |nl: &str, name: &str, count_var: &str, count: f64, given: usize, hint: String| {
+                (
+                    nl.to_string(),
+                    Some(name.to_string()),
+                    Severity::Warning,
+                    DeckProblem::CountMismatch {
+                        count_variable: count_var.to_string(),
+                        count,
+                        variable: name.to_string(),
+                        given,
+                    },
+                    Some(hint),
+                )
+            };
         let mut found = Vec::new();
         let nmach = self.case.scalar("FLTCON", "NMACH");
         for (nl, values) in &self.case.namelists {
@@ -973,18 +988,7 @@ impl<'a> Reader<'a> {
                     } else {
                         format!("give {count} values of {name} or set {count_var}={given}.0; only the {given} given are used here, the original reads the others as zero")
                     };
-                    found.push((
-                        nl.clone(),
-                        Some(name.clone()),
-                        Severity::Warning,
-                        DeckProblem::CountMismatch {
-                            count_variable: count_var.clone(),
-                            count,
-                            variable: name.clone(),
-                            given,
-                        },
-                        Some(hint),
-                    ));
+                    found.push(mismatch(nl, name, count_var, count, given, hint));
                 } else if (given as f64) > count
                     && self.assigned.get(nl).is_some_and(|a| {
                         a.iter()
@@ -993,20 +997,10 @@ impl<'a> Reader<'a> {
                 {
                     // Values beyond the count written in this case (saved data may hold more
                     // values than a later case asks for on purpose).
-                    found.push((
-                        nl.clone(),
-                        Some(name.clone()),
-                        Severity::Warning,
-                        DeckProblem::CountMismatch {
-                            count_variable: count_var.clone(),
-                            count,
-                            variable: name.clone(),
-                            given,
-                        },
-                        Some(format!(
-                            "{name} beyond the first {count} is not used; raise {count_var} to use all {given}"
-                        )),
-                    ));
+                    let hint = format!(
+                        "{name} beyond the first {count} is not used; raise {count_var} to use all {given}"
+                    );
+                    found.push(mismatch(nl, name, count_var, count, given, hint));
                 }
             }
         }

@@ -210,15 +210,7 @@ pub fn section_pages(case: &CaseResults) -> String {
                 "     UPPER ABSCISSA     UPPER ORDINATE     LOWER ABSCISSA     LOWER ORDINATE      X-FRACTION CHORD    MEAN LINE    THICKNESS"
             );
             for r in &c.rows {
-                let values = [
-                    r.upper_x,
-                    r.upper_y,
-                    r.lower_x,
-                    r.lower_y,
-                    r.x,
-                    r.mean,
-                    r.thickness,
-                ];
+                let values = r.values();
                 let mut line = String::new();
                 let mut left = 0;
                 for (v, right) in values.iter().zip(COORDINATE_EDGES) {

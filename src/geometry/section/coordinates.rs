@@ -38,6 +38,20 @@ impl CoordinateRow {
         }
     }
 
+    /// The row's numbers in the order the original prints them: upper x, upper y, lower x,
+    /// lower y, station, mean line, thickness.
+    pub fn values(&self) -> [f64; 7] {
+        [
+            self.upper_x,
+            self.upper_y,
+            self.lower_x,
+            self.lower_y,
+            self.x,
+            self.mean,
+            self.thickness,
+        ]
+    }
+
     /// The leading-edge point: both surfaces at the origin, at station `x`.
     pub fn leading_edge(x: f64) -> Self {
         Self::edge(0.0, x)

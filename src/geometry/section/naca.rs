@@ -500,15 +500,7 @@ mod tests {
             let c = section(series, text).coordinates().unwrap();
             assert_eq!(c.rows.len(), 60);
             for r in &c.rows {
-                let v = [
-                    r.upper_x,
-                    r.upper_y,
-                    r.lower_x,
-                    r.lower_y,
-                    r.x,
-                    r.mean,
-                    r.thickness,
-                ];
+                let v = r.values();
                 assert!(v.iter().all(|v| v.is_finite()), "{text}: {r:?}");
             }
         }
