@@ -164,6 +164,37 @@ pub fn planform_area_and_mac(p: &Planform) -> Option<(f64, f64)> {
     Some((area, mac))
 }
 
+/// The original's configuration line for the body alone.
+pub const BODY_ALONE: &str = "DATCOM BODY ALONE CONFIGURATION";
+
+/// The body-alone coefficients at one condition (DATCOM 4.2), or the reason there are none.
+fn body_alone_coefficients(
+    case: &Case,
+    condition: &FlightCondition,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    let body = case.body.as_ref().ok_or("the case has no body")?;
+    let geometry = crate::geometry::body(body).map_err(|e| format!("body geometry: {e}"))?;
+    let b = crate::methods::body::body_alone(case, &geometry, condition, alpha_deg)
+        .map_err(|e| format!("body alone: {e}"))?;
+    let warnings = b
+        .warnings
+        .iter()
+        .map(|w| format!("body alone: {w}"))
+        .collect();
+    let n = alpha_deg.len();
+    let mut s = StaticCoefficients::empty(n);
+    s.cd = b.cd;
+    s.cl = b.cl;
+    s.cm = b.cm;
+    s.cn = b.cn;
+    s.ca = b.ca;
+    s.xcp = b.xcp;
+    s.cla = b.cla_per_rad;
+    s.cma = b.cma_per_rad;
+    Ok((s, warnings))
+}
+
 /// Configuration name as the original prints it, from the components present.
 pub fn configuration_name(case: &Case) -> String {
     let body = case.body.is_some();
@@ -196,6 +227,8 @@ pub fn configuration_name(case: &Case) -> String {
     }
     match parts.as_slice() {
         [] => "NO COMPONENT".to_string(),
+        // The original's name for the body alone.
+        ["BODY"] => BODY_ALONE.to_string(),
         [one] => format!("{one} ALONE CONFIGURATION"),
         _ => format!("{} CONFIGURATION", parts.join("-")),
     }
@@ -235,10 +268,35 @@ pub fn run_case(case: &Case) -> CaseResults {
         let conds = case.conditions.clone();
         warnings.extend(case.condition_warnings.iter().cloned());
         let n = f.alpha_deg.len();
+        let configuration = configuration_name(case);
+        let body_only = configuration == BODY_ALONE;
         for c in conds {
+            // The body alone: the configuration itself, or with BUILD a part of the build-up.
+            if case.body.is_some() && (body_only || case.cards.build) {
+                let mut body = ConditionResults {
+                    condition: c.clone(),
+                    configuration: BODY_ALONE.to_string(),
+                    alpha_deg: f.alpha_deg.clone(),
+                    static_coefficients: StaticCoefficients::empty(n),
+                    dynamic: None,
+                };
+                match body_alone_coefficients(case, &c, &f.alpha_deg) {
+                    Ok((s, mut w)) => {
+                        body.static_coefficients = s;
+                        warnings.append(&mut w);
+                    }
+                    Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach)),
+                }
+                if body_only {
+                    body.dynamic = case.cards.damp.then(|| DynamicDerivatives::empty(n));
+                    conditions.push(body);
+                    continue;
+                }
+                conditions.push(body);
+            }
             conditions.push(ConditionResults {
                 condition: c,
-                configuration: configuration_name(case),
+                configuration: configuration.clone(),
                 alpha_deg: f.alpha_deg.clone(),
                 static_coefficients: StaticCoefficients::empty(n),
                 dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),

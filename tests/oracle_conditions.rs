@@ -29,7 +29,14 @@ fn our_rows(results: &Results, page_outpt2: bool) -> Vec<Row> {
     let mut out = Vec::new();
     for case in &results.cases {
         let (area, long, lat, xcg, zcg) = reference_view(case);
-        for c in &case.conditions {
+        // One entry per flight condition: the case's own configuration (with BUILD the
+        // build-up adds entries for its parts, at the same conditions).
+        let main = case.conditions.last().map(|c| c.configuration.clone());
+        for c in case
+            .conditions
+            .iter()
+            .filter(|c| Some(&c.configuration) == main.as_ref())
+        {
             let v = condition_view(c, case.dim);
             let mut pressure = v.pressure;
             let mut temperature = v.temperature;

@@ -2,3 +2,4 @@
 //! function over geometry and flight conditions that returns its named terms and warnings.
 
 pub mod section;
+pub mod body;
