@@ -1,5 +1,5 @@
 //! DATCOM methods, one module per section family of the handbook. Each method is a pure
 //! function over geometry and flight conditions that returns its named terms and warnings.
 
-pub mod section;
 pub mod body;
+pub mod section;
