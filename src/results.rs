@@ -195,6 +195,35 @@ fn body_alone_coefficients(
     Ok((s, warnings))
 }
 
+/// The wing-alone coefficients at one condition (DATCOM 4.1.3-4.1.5), or the reason there are
+/// none.
+fn wing_alone_coefficients(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    let w = crate::methods::wing::wing_alone(case, condition_index, alpha_deg)
+        .map_err(|e| format!("wing alone: {e}"))?;
+    let warnings = w
+        .warnings
+        .iter()
+        .map(|x| format!("wing alone: {x}"))
+        .collect();
+    let mut s = StaticCoefficients::empty(alpha_deg.len());
+    s.cd = w.cd;
+    s.cl = w.cl;
+    s.cm = w.cm;
+    s.cn = w.cn;
+    s.ca = w.ca;
+    s.xcp = w.xcp;
+    s.cla = w.cla_per_rad;
+    s.cma = w.cma_per_rad;
+    Ok((s, warnings))
+}
+
+/// The original's configuration line for the wing alone.
+pub const WING_ALONE: &str = "WING ALONE CONFIGURATION";
+
 /// Configuration name as the original prints it, from the components present.
 pub fn configuration_name(case: &Case) -> String {
     let body = case.body.is_some();
@@ -269,38 +298,53 @@ pub fn run_case(case: &Case) -> CaseResults {
         warnings.extend(case.condition_warnings.iter().cloned());
         let n = f.alpha_deg.len();
         let configuration = configuration_name(case);
-        let body_only = configuration == BODY_ALONE;
-        for c in conds {
-            // The body alone: the configuration itself, or with BUILD a part of the build-up.
-            if case.body.is_some() && (body_only || case.cards.build) {
-                let mut body = ConditionResults {
+        // Component configurations: the configuration itself when it is one component, and
+        // with BUILD the parts of the build-up the methods so far compute.
+        let parts: [(&str, bool); 2] = [
+            (BODY_ALONE, case.body.is_some()),
+            (WING_ALONE, case.wing.is_some()),
+        ];
+        for (index, c) in conds.into_iter().enumerate() {
+            let mut own_computed = false;
+            for (part, present) in parts {
+                let own = configuration == part;
+                if !present || !(own || case.cards.build) {
+                    continue;
+                }
+                let computed = if part == BODY_ALONE {
+                    body_alone_coefficients(case, &c, &f.alpha_deg)
+                } else {
+                    wing_alone_coefficients(case, index, &f.alpha_deg)
+                };
+                let mut entry = ConditionResults {
                     condition: c.clone(),
-                    configuration: BODY_ALONE.to_string(),
+                    configuration: part.to_string(),
                     alpha_deg: f.alpha_deg.clone(),
                     static_coefficients: StaticCoefficients::empty(n),
                     dynamic: None,
                 };
-                match body_alone_coefficients(case, &c, &f.alpha_deg) {
+                match computed {
                     Ok((s, mut w)) => {
-                        body.static_coefficients = s;
+                        entry.static_coefficients = s;
                         warnings.append(&mut w);
                     }
                     Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach)),
                 }
-                if body_only {
-                    body.dynamic = case.cards.damp.then(|| DynamicDerivatives::empty(n));
-                    conditions.push(body);
-                    continue;
+                if own {
+                    entry.dynamic = case.cards.damp.then(|| DynamicDerivatives::empty(n));
+                    own_computed = true;
                 }
-                conditions.push(body);
+                conditions.push(entry);
             }
-            conditions.push(ConditionResults {
-                condition: c,
-                configuration: configuration.clone(),
-                alpha_deg: f.alpha_deg.clone(),
-                static_coefficients: StaticCoefficients::empty(n),
-                dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
-            });
+            if !own_computed {
+                conditions.push(ConditionResults {
+                    condition: c,
+                    configuration: configuration.clone(),
+                    alpha_deg: f.alpha_deg.clone(),
+                    static_coefficients: StaticCoefficients::empty(n),
+                    dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
+                });
+            }
         }
     }
     CaseResults {

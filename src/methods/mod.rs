@@ -3,3 +3,4 @@
 
 pub mod body;
 pub mod section;
+pub mod wing;

@@ -1,0 +1,141 @@
+//! The section values the wing methods take: the user's xxSCHR values where given, else the
+//! values the section method computes (DATCOM 4.1.1; `methods::section`), as the original's
+//! SECO fills the words the user leaves unset.
+
+use serde::Serialize;
+
+use super::{WingMethodError, WingWarning};
+use crate::case::{Case, SectionInput};
+use crate::methods::section::SectionCharacteristics;
+
+/// Section characteristics of the wing at one flight condition.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WingSection {
+    /// Section lift-curve slope at the condition's Mach number (CLALPA), per radian.
+    pub lift_curve_slope_per_rad: f64,
+    /// Section maximum lift coefficient at the condition's Mach number (CLMAX).
+    pub max_lift: Option<f64>,
+    /// Section zero-lift angle (ALPHAO; else the computed one; else ALPHAI − CLI/c_lα), deg.
+    pub zero_lift_alpha_deg: f64,
+    /// The zero-lift angle takes the Mach correction of figure 4.1.3.1-5 (CAMBER, or a
+    /// computed section).
+    pub cambered: bool,
+    /// Zero-lift pitching moment about the quarter chord (CMO, averaged with CMOT when both
+    /// are given).
+    pub cm0: f64,
+    /// Thickness ratio and chord fraction of maximum thickness (TOVC, XOVC), inboard and
+    /// outboard (TOVCO, XOVCO; the inboard values when not given).
+    pub thickness_ratio: Option<f64>,
+    pub max_thickness_x: Option<f64>,
+    pub outboard_thickness_ratio: Option<f64>,
+    pub outboard_max_thickness_x: Option<f64>,
+    /// Leading-edge sharpness parameter Δy, percent chord (DELTAY).
+    pub delta_y_percent: Option<f64>,
+    /// Leading-edge radius over chord, inboard and outboard (LERI, LERO; LERI when LERO is
+    /// not given).
+    pub leading_edge_radius: Option<f64>,
+    pub outboard_leading_edge_radius: Option<f64>,
+    /// Section aerodynamic centre, fraction of chord (XAC).
+    pub aerodynamic_centre: Option<f64>,
+    /// ARCL of the low-aspect-ratio criterion (3.5 unless given; held in [3, 4]).
+    pub arcl: f64,
+}
+
+/// ARCL when not given, and its limits (as the original's CHECK holds it).
+const DEFAULT_ARCL: f64 = 3.5;
+const ARCL_RANGE: (f64, f64) = (3.0, 4.0);
+/// CMO and CMOT are averaged only when both exceed this in magnitude (as the original).
+const CM0_GIVEN_ABOVE: f64 = 1e-10;
+
+fn scalar(input: Option<&SectionInput>, names: &[&str]) -> Option<f64> {
+    let i = input?;
+    names
+        .iter()
+        .find_map(|n| i.scalars.get(*n).copied())
+        .filter(|v| v.is_finite())
+}
+
+fn per_mach(input: Option<&SectionInput>, name: &str, mach_index: usize) -> Option<f64> {
+    input?
+        .per_mach
+        .get(name)?
+        .get(mach_index)
+        .copied()
+        .filter(|v| v.is_finite())
+}
+
+/// The wing section at flight condition `condition_index` of `case`: the user's $WGSCHR
+/// values, else those of `computed` (the section method's characteristics of the case's
+/// wing section, one `per_mach` entry per condition).
+pub fn wing_section(
+    case: &Case,
+    condition_index: usize,
+    computed: Option<&SectionCharacteristics>,
+    warnings: &mut Vec<WingWarning>,
+) -> Result<WingSection, WingMethodError> {
+    let condition = case
+        .conditions
+        .get(condition_index)
+        .ok_or(WingMethodError::NoCondition {
+            index: condition_index,
+        })?;
+    let m = condition.mach_index;
+    let user = case.sections.get("WING");
+    let at_condition = computed.and_then(|c| c.per_mach.get(condition_index));
+    let lift_curve_slope_per_rad = per_mach(user, "CLALPA", m)
+        .map(f64::to_degrees)
+        .or(at_condition.and_then(|c| c.cla_per_rad))
+        .filter(|s| *s > 0.0)
+        .ok_or(WingMethodError::NoSectionLiftCurveSlope {
+            mach: condition.mach,
+        })?;
+    let zero_lift_alpha_deg = scalar(user, &["ALPHAO", "ALPHA0"])
+        .or(computed.map(|c| c.zero_lift_alpha_deg))
+        .unwrap_or_else(|| {
+            let cli = scalar(user, &["CLI"]).unwrap_or(0.0);
+            let ai = scalar(user, &["ALPHAI"]).unwrap_or(0.0);
+            ai - cli / lift_curve_slope_per_rad.to_radians()
+        });
+    let cambered = user.and_then(|u| u.camber).unwrap_or(false) || computed.is_some();
+    let cmo = scalar(user, &["CMO", "CM0"]).or(computed.map(|c| c.cm0));
+    let cmot = scalar(user, &["CMOT", "CM0T"]);
+    let cm0 = match (cmo, cmot) {
+        (Some(a), Some(b)) if a.abs() >= CM0_GIVEN_ABOVE && b.abs() >= CM0_GIVEN_ABOVE => {
+            0.5 * (a + b)
+        }
+        (Some(a), _) => a,
+        (None, _) => 0.0,
+    };
+    let thickness_ratio = scalar(user, &["TOVC"]).or(computed.map(|c| c.max_thickness));
+    let max_thickness_x = scalar(user, &["XOVC"]).or(computed.map(|c| c.max_thickness_x));
+    let delta_y_percent = scalar(user, &["DELTAY"]).or(computed.map(|c| c.delta_y_percent));
+    let leading_edge_radius = scalar(user, &["LERI"]).or(computed.map(|c| c.leading_edge_radius));
+    for (name, v) in [
+        ("TOVC", thickness_ratio),
+        ("DELTAY", delta_y_percent),
+        ("LERI", leading_edge_radius),
+    ] {
+        if v.is_none() {
+            warnings.push(WingWarning::SectionValueMissing { name });
+        }
+    }
+    let arcl = scalar(user, &["ARCL"])
+        .unwrap_or(DEFAULT_ARCL)
+        .clamp(ARCL_RANGE.0, ARCL_RANGE.1);
+    Ok(WingSection {
+        lift_curve_slope_per_rad,
+        max_lift: per_mach(user, "CLMAX", m),
+        zero_lift_alpha_deg,
+        cambered,
+        cm0,
+        thickness_ratio,
+        max_thickness_x,
+        outboard_thickness_ratio: scalar(user, &["TOVCO"]).or(thickness_ratio),
+        outboard_max_thickness_x: scalar(user, &["XOVCO"]).or(max_thickness_x),
+        delta_y_percent,
+        leading_edge_radius,
+        outboard_leading_edge_radius: scalar(user, &["LERO"]).or(leading_edge_radius),
+        aerodynamic_centre: per_mach(user, "XAC", m).or(at_condition.and_then(|c| c.xac)),
+        arcl,
+    })
+}
