@@ -29,6 +29,21 @@ enum ParseFormat {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum ReynoldsRule {
+    Flight,
+    Original,
+}
+
+impl ReynoldsRule {
+    fn rule(self) -> datcom::case::SectionReynolds {
+        match self {
+            ReynoldsRule::Flight => datcom::case::SectionReynolds::Flight,
+            ReynoldsRule::Original => datcom::case::SectionReynolds::Original,
+        }
+    }
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum CompareFormat {
     Text,
     Json,
@@ -84,6 +99,9 @@ enum Command {
         reference: PathBuf,
         #[arg(long, value_enum, default_value = "text")]
         format: CompareFormat,
+        /// Reynolds number of the section methods for decks without RNNUB (see `run`).
+        #[arg(long, value_enum, default_value = "flight")]
+        reynolds: ReynoldsRule,
     },
     /// Run a deck: flight conditions and coefficients.
     Run {
@@ -93,6 +111,11 @@ enum Command {
         /// Write the output to DIR/<deck name>.<txt|json|csv> instead of standard output.
         #[arg(short = 'o', long = "output", value_name = "DIR")]
         output: Option<PathBuf>,
+        /// Reynolds number of the section methods when the deck gives no RNNUB: the flight
+        /// condition's (default), or the original program's fixed values (to reproduce its
+        /// listings).
+        #[arg(long, value_enum, default_value = "flight")]
+        reynolds: ReynoldsRule,
     },
 }
 
@@ -165,7 +188,7 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
 }
 
 /// A result in the JSON shape of `run`, from a deck, a JSON file or a listing.
-fn results_json(path: &Path) -> Result<serde_json::Value, ExitCode> {
+fn results_json(path: &Path, reynolds: ReynoldsRule) -> Result<serde_json::Value, ExitCode> {
     let bytes = std::fs::read(path).map_err(|e| {
         eprintln!("datcom-rs: cannot read {}: {e}", path.display());
         ExitCode::from(2)
@@ -177,7 +200,7 @@ fn results_json(path: &Path) -> Result<serde_json::Value, ExitCode> {
     } else if text.contains("AUTOMATED STABILITY AND CONTROL METHODS") {
         datcom::report::json::listing_to_string(&text, &name)
     } else {
-        let deck = datcom::read_deck(&text, &name);
+        let deck = datcom::read_deck(&text, &name).with_section_reynolds(reynolds.rule());
         datcom::report::json::to_string(&datcom::run(&deck))
     };
     serde_json::from_str(&json).map_err(|e| {
@@ -186,8 +209,16 @@ fn results_json(path: &Path) -> Result<serde_json::Value, ExitCode> {
     })
 }
 
-fn compare(ours: &Path, reference: &Path, format: CompareFormat) -> ExitCode {
-    let (a, b) = match (results_json(ours), results_json(reference)) {
+fn compare(
+    ours: &Path,
+    reference: &Path,
+    format: CompareFormat,
+    reynolds: ReynoldsRule,
+) -> ExitCode {
+    let (a, b) = match (
+        results_json(ours, reynolds),
+        results_json(reference, reynolds),
+    ) {
         (Ok(a), Ok(b)) => (a, b),
         (Err(c), _) | (_, Err(c)) => return c,
     };
@@ -264,7 +295,8 @@ fn main() -> ExitCode {
             ours,
             reference,
             format,
-        } => compare(&ours, &reference, format),
+            reynolds,
+        } => compare(&ours, &reference, format, reynolds),
         Command::Airfoil {
             file,
             namelist,
@@ -293,9 +325,10 @@ fn main() -> ExitCode {
             deck,
             format,
             output,
+            reynolds,
         } => {
             let d = match load(&deck) {
-                Ok(d) => d,
+                Ok(d) => d.with_section_reynolds(reynolds.rule()),
                 Err(code) => return code,
             };
             print_diagnostics(&d, false, &mut std::io::stderr().lock());

@@ -223,6 +223,33 @@ fn wing_alone_coefficients(
 
 /// The original's configuration line for the wing alone.
 pub const WING_ALONE: &str = "WING ALONE CONFIGURATION";
+/// The original's configuration line for the wing and body.
+pub const WING_BODY: &str = "WING-BODY CONFIGURATION";
+
+/// The wing-body coefficients at one condition (DATCOM 4.3), or the reason there are none.
+fn wing_body_coefficients(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    let w = crate::methods::wing_body::wing_body(case, condition_index, alpha_deg)
+        .map_err(|e| format!("wing-body: {e}"))?;
+    let warnings = w
+        .warnings
+        .iter()
+        .map(|x| format!("wing-body: {x}"))
+        .collect();
+    let mut s = StaticCoefficients::empty(alpha_deg.len());
+    s.cd = w.cd;
+    s.cl = w.cl;
+    s.cm = w.cm;
+    s.cn = w.cn;
+    s.ca = w.ca;
+    s.xcp = w.xcp;
+    s.cla = w.cla_per_rad;
+    s.cma = w.cma_per_rad;
+    Ok((s, warnings))
+}
 
 /// Configuration name as the original prints it, from the components present.
 pub fn configuration_name(case: &Case) -> String {
@@ -300,9 +327,10 @@ pub fn run_case(case: &Case) -> CaseResults {
         let configuration = configuration_name(case);
         // Component configurations: the configuration itself when it is one component, and
         // with BUILD the parts of the build-up the methods so far compute.
-        let parts: [(&str, bool); 2] = [
+        let parts: [(&str, bool); 3] = [
             (BODY_ALONE, case.body.is_some()),
             (WING_ALONE, case.wing.is_some()),
+            (WING_BODY, case.wing.is_some() && case.body.is_some()),
         ];
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;
@@ -311,10 +339,10 @@ pub fn run_case(case: &Case) -> CaseResults {
                 if !present || !(own || case.cards.build) {
                     continue;
                 }
-                let computed = if part == BODY_ALONE {
-                    body_alone_coefficients(case, &c, &f.alpha_deg)
-                } else {
-                    wing_alone_coefficients(case, index, &f.alpha_deg)
+                let computed = match part {
+                    BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
+                    WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg),
+                    _ => wing_body_coefficients(case, index, &f.alpha_deg),
                 };
                 let mut entry = ConditionResults {
                     condition: c.clone(),

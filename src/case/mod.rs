@@ -234,6 +234,21 @@ pub struct SectionInput {
     pub camber: Option<bool>,
 }
 
+/// Which Reynolds number the section methods (lift-curve slope, maximum lift) take when the
+/// deck gives no RNNUB.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SectionReynolds {
+    /// The flight condition's Reynolds number on the exposed mean aerodynamic chord (the
+    /// method's intent; what low-Reynolds-number aircraft need).
+    #[default]
+    Flight,
+    /// As the original program: the given RNNUB when there is one, else its fixed values
+    /// (1E6 for the lift-curve slope, 9E6 for the maximum lift), which it takes because it
+    /// computes the flight Reynolds number only later. For reproducing old listings.
+    Original,
+}
+
 /// One case of a deck, typed and in SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Case {
@@ -244,6 +259,8 @@ pub struct Case {
     /// SYNTHS SCALE (default 1): geometry inside is the deck's geometry times this factor.
     pub scale: f64,
     pub deriv: DerivUnit,
+    /// Reynolds number rule of the section methods (see [`SectionReynolds`]).
+    pub section_reynolds: SectionReynolds,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -280,6 +297,14 @@ impl crate::error::Diagnosed for Deck {
 }
 
 impl Deck {
+    /// The same deck with every case using `rule` for the section Reynolds number.
+    pub fn with_section_reynolds(mut self, rule: SectionReynolds) -> Deck {
+        for c in &mut self.cases {
+            c.section_reynolds = rule;
+        }
+        self
+    }
+
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
     pub fn from_raw(raw: RawDeck) -> Deck {
         let mut diagnostics = raw.diagnostics;
@@ -556,6 +581,7 @@ impl Case {
             dim,
             scale,
             deriv: raw.cards.deriv.unwrap_or_default(),
+            section_reynolds: SectionReynolds::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),
             reference: Reference {

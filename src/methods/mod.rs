@@ -4,3 +4,4 @@
 pub mod body;
 pub mod section;
 pub mod wing;
+pub mod wing_body;

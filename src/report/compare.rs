@@ -98,7 +98,38 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
     for (ci, (a, b)) in cases(ours).iter().zip(cases(reference).iter()).enumerate() {
         let ca = a["conditions"].as_array().unwrap_or(&empty);
         let cb = b["conditions"].as_array().unwrap_or(&empty);
-        for (ki, (x, y)) in ca.iter().zip(cb).enumerate() {
+        // Each reference entry is paired with our entry of the same configuration and flight
+        // condition (Mach and altitude); the order of configuration pages differs between
+        // programs under BUILD.
+        let key = |c: &Value| {
+            (
+                c["configuration"].as_str().unwrap_or("").to_string(),
+                c["mach"].as_f64(),
+                c["altitude"].as_f64(),
+            )
+        };
+        let same = |p: &(String, Option<f64>, Option<f64>),
+                    q: &(String, Option<f64>, Option<f64>)| {
+            let near = |a: Option<f64>, b: Option<f64>| match (a, b) {
+                (Some(a), Some(b)) => (a - b).abs() <= 1e-3 * a.abs().max(1.0),
+                (None, None) => true,
+                _ => false,
+            };
+            p.0 == q.0 && near(p.1, q.1) && near(p.2, q.2)
+        };
+        let mut used = vec![false; ca.len()];
+        let mut pairs = Vec::new();
+        for y in cb {
+            let ky = key(y);
+            if let Some(i) = (0..ca.len()).find(|&i| !used[i] && same(&key(&ca[i]), &ky)) {
+                used[i] = true;
+                pairs.push((&ca[i], y));
+            } else {
+                // No counterpart: every reference number of this entry is missing on our side.
+                pairs.push((&Value::Null, y));
+            }
+        }
+        for (ki, (x, y)) in pairs.into_iter().enumerate() {
             for (block, names) in [("static", &STATIC[..]), ("dynamic", &DYNAMIC[..])] {
                 let alpha = numbers(&y[block]["alpha"]);
                 for name in names {

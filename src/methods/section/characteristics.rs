@@ -35,6 +35,9 @@ pub struct MachCharacteristics {
     pub reynolds_number: Option<f64>,
     /// c_lα/(c_lα)theory of the viscous correction.
     pub cla_ratio: Option<f64>,
+    /// Section maximum lift coefficient at this condition's Reynolds number (DATCOM 4.1.1.4;
+    /// the terms are in [`SectionCharacteristics::max_lift`]).
+    pub max_cl: Option<f64>,
 }
 
 /// The crest-critical state.
@@ -150,6 +153,9 @@ pub struct SectionCharacteristics {
     pub delta_y_percent: f64,
     /// One per condition, in the order given.
     pub per_mach: Vec<MachCharacteristics>,
+    /// Section maximum lift (DATCOM 4.1.1.4): its terms and one value per condition; `None`
+    /// when it cannot be computed (non-finite geometry).
+    pub max_lift: Option<super::SectionMaxLift>,
     pub crest_critical: Option<CrestCritical>,
     pub warnings: Vec<SectionWarning>,
 }

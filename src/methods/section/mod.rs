@@ -1,7 +1,8 @@
 //! Airfoil section characteristics: what the original prints on its `<SURFACE> SECTION
 //! DEFINITION` pages, from the section's ordinates (DATCOM 2.2.1 section parameters, 4.1.1.1
 //! zero-lift angle, 4.1.1.2 lift-curve slope, 4.1.2.1 zero-lift pitching moment, 4.1.4.1
-//! aerodynamic centre; the original's routines M50O62, DELY, THEORY, IDEAL and SLOPE).
+//! aerodynamic centre; the original's routines M50O62, DELY, THEORY, IDEAL and SLOPE), and the
+//! section maximum lift coefficient (DATCOM 4.1.1.4, routine MAXCL; module `max_lift`).
 //!
 //! The method is Weber's: the velocity on the section at 31 chordwise points from sums over
 //! the thickness and mean-line ordinates (module `weber`), the pressure from it with
@@ -25,6 +26,7 @@ mod crest;
 pub mod design;
 mod interpolation;
 mod lift;
+mod max_lift;
 mod parameters;
 mod shape;
 mod surface;
@@ -37,6 +39,12 @@ use serde::Serialize;
 pub use characteristics::{
     CharacteristicsError, CrestCritical, MachCharacteristics, SectionCharacteristics,
     SectionWarning, SlopeSource,
+};
+pub use max_lift::{
+    section_max_lift, ConditionMaxLift, MaxLiftError, MaxLiftGeometry, MaxLiftWarning,
+    SectionMaxLift, BASE_CHART as MAX_LIFT_BASE_CHART, CAMBER_CHART as MAX_LIFT_CAMBER_CHART,
+    MAX_LIFT_REFERENCE_REYNOLDS_NUMBER, REYNOLDS_CHART as MAX_LIFT_REYNOLDS_CHART,
+    THICKNESS_POSITION_CHART as MAX_LIFT_THICKNESS_POSITION_CHART,
 };
 pub use shape::{DesignLift, SectionShape, ShapeError, ThicknessReading};
 pub use surface::{surface_section, SurfaceSection, SurfaceSectionError};
@@ -186,7 +194,7 @@ pub fn section_characteristics_with(
         start_deg: mach0.at.alpha_deg,
     };
     let mut exceeded = false;
-    let per_mach = conditions
+    let mut per_mach: Vec<MachCharacteristics> = conditions
         .iter()
         .enumerate()
         .map(|(i, c)| {
@@ -199,6 +207,25 @@ pub fn section_characteristics_with(
 
     let (max_thickness_measured, max_thickness_x) = parameters::max_thickness(shape);
     let (max_camber, max_camber_x) = parameters::max_camber(shape);
+    let delta_y_percent = parameters::delta_y_percent(shape);
+    let max_lift = section_max_lift(
+        &MaxLiftGeometry {
+            delta_y_percent,
+            max_thickness_x,
+            max_camber,
+            max_camber_x,
+        },
+        &conditions
+            .iter()
+            .map(|c| c.reynolds_number)
+            .collect::<Vec<_>>(),
+    )
+    .ok();
+    if let Some(m) = &max_lift {
+        for (row, at) in per_mach.iter_mut().zip(&m.per_condition) {
+            row.max_cl = Some(at.max_cl);
+        }
+    }
     let out = SectionCharacteristics {
         ideal_alpha_deg: thin.ideal_alpha_deg,
         ideal_cl: thin.ideal_cl,
@@ -215,8 +242,9 @@ pub fn section_characteristics_with(
         max_thickness_x,
         max_camber,
         max_camber_x,
-        delta_y_percent: parameters::delta_y_percent(shape),
+        delta_y_percent,
         per_mach,
+        max_lift,
         crest_critical: crest.map(|c| CrestCritical {
             mach: c.mach,
             x: c.x,
@@ -271,6 +299,7 @@ impl Subsonic<'_> {
             zero_lift_alpha_deg: None,
             reynolds_number: None,
             cla_ratio: None,
+            max_cl: None,
         };
         if !(mach.is_finite() && mach >= 0.0) {
             warnings.push(SectionWarning::MachInvalid { mach });

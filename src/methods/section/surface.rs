@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::case::{Case, Planform, SectionInput};
+use crate::case::{Case, Planform, SectionInput, SectionReynolds};
 use crate::deck::cards::{AirfoilCard, Surface};
 use crate::geometry::section::{
     user_defined, NacaSection, SectionCoordinates, SectionError, Thickness,
@@ -146,9 +146,18 @@ pub fn surface_section(
         let conditions = case
             .conditions
             .iter()
-            .map(|c| SectionCondition {
-                mach: c.mach,
-                reynolds_number: Some(c.reynolds_per_length * chord),
+            .map(|c| {
+                // Under the original's rule a condition without a given RNNUB has no
+                // Reynolds number here, and the section methods take their fixed values.
+                let given = case
+                    .flight
+                    .as_ref()
+                    .is_some_and(|f| f.reynolds_per_length.get(c.mach_index).is_some());
+                let known = case.section_reynolds == SectionReynolds::Flight || given;
+                SectionCondition {
+                    mach: c.mach,
+                    reynolds_number: known.then_some(c.reynolds_per_length * chord),
+                }
             })
             .collect();
         Ok(SurfaceSection {

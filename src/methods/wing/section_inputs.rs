@@ -13,7 +13,8 @@ use crate::methods::section::SectionCharacteristics;
 pub struct WingSection {
     /// Section lift-curve slope at the condition's Mach number (CLALPA), per radian.
     pub lift_curve_slope_per_rad: f64,
-    /// Section maximum lift coefficient at the condition's Mach number (CLMAX).
+    /// Section maximum lift coefficient at the condition's Mach number (CLMAX; else the
+    /// section method's, DATCOM 4.1.1.4, at the condition's Reynolds number).
     pub max_lift: Option<f64>,
     /// Section zero-lift angle (ALPHAO; else the computed one; else ALPHAI − CLI/c_lα), deg.
     pub zero_lift_alpha_deg: f64,
@@ -124,7 +125,7 @@ pub fn wing_section(
         .clamp(ARCL_RANGE.0, ARCL_RANGE.1);
     Ok(WingSection {
         lift_curve_slope_per_rad,
-        max_lift: per_mach(user, "CLMAX", m),
+        max_lift: per_mach(user, "CLMAX", m).or(at_condition.and_then(|c| c.max_cl)),
         zero_lift_alpha_deg,
         cambered,
         cm0,
