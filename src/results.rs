@@ -201,9 +201,11 @@ fn wing_alone_coefficients(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
+    section: Option<&SectionCharacteristics>,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    let w = crate::methods::wing::wing_alone(case, condition_index, alpha_deg)
-        .map_err(|e| format!("wing alone: {e}"))?;
+    let w =
+        crate::methods::wing::wing_alone_with_section(case, condition_index, alpha_deg, section)
+            .map_err(|e| format!("wing alone: {e}"))?;
     let warnings = w
         .warnings
         .iter()
@@ -231,9 +233,15 @@ fn wing_body_coefficients(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
+    section: Option<&SectionCharacteristics>,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    let w = crate::methods::wing_body::wing_body(case, condition_index, alpha_deg)
-        .map_err(|e| format!("wing-body: {e}"))?;
+    let w = crate::methods::wing_body::wing_body_with_section(
+        case,
+        condition_index,
+        alpha_deg,
+        section,
+    )
+    .map_err(|e| format!("wing-body: {e}"))?;
     let warnings = w
         .warnings
         .iter()
@@ -320,6 +328,12 @@ fn reference(case: &Case) -> ReferenceDimensions {
 pub fn run_case(case: &Case) -> CaseResults {
     let mut warnings = Vec::new();
     let mut conditions = Vec::new();
+    // Sections first: the wing methods take the wing's section from here (computed once).
+    let sections = sections(case);
+    let wing_section = sections
+        .iter()
+        .find(|s| s.surface == Surface::Wing)
+        .and_then(|s| s.characteristics.as_ref());
     if let Some(f) = &case.flight {
         let conds = case.conditions.clone();
         warnings.extend(case.condition_warnings.iter().cloned());
@@ -341,8 +355,8 @@ pub fn run_case(case: &Case) -> CaseResults {
                 }
                 let computed = match part {
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
-                    WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg),
-                    _ => wing_body_coefficients(case, index, &f.alpha_deg),
+                    WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg, wing_section),
+                    _ => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),
                 };
                 let mut entry = ConditionResults {
                     condition: c.clone(),
@@ -382,7 +396,7 @@ pub fn run_case(case: &Case) -> CaseResults {
         deriv: case.deriv,
         scale: case.scale,
         reference: reference(case),
-        sections: sections(case),
+        sections,
         conditions,
         warnings,
     }
