@@ -177,13 +177,23 @@ fn body_alone_coefficients(
     let geometry = crate::geometry::body(body).map_err(|e| format!("body geometry: {e}"))?;
     let b = crate::methods::body::body_alone(case, &geometry, condition, alpha_deg)
         .map_err(|e| format!("body alone: {e}"))?;
-    let warnings = b
+    let mut warnings: Vec<String> = b
         .warnings
         .iter()
         .map(|w| format!("body alone: {w}"))
         .collect();
     let n = alpha_deg.len();
     let mut s = StaticCoefficients::empty(n);
+    // Sideslip derivatives of the body alone (DATCOM 5.2.1.1 as the original forms them).
+    let lat = crate::methods::lateral::body_lateral(&b, case);
+    warnings.extend(
+        lat.warnings
+            .iter()
+            .map(|w| format!("body alone, sideslip: {w}")),
+    );
+    s.cyb = lat.cyb;
+    s.cnb = lat.cnb;
+    s.clb = lat.clb;
     s.cd = b.cd;
     s.cl = b.cl;
     s.cm = b.cm;
@@ -206,12 +216,26 @@ fn wing_alone_coefficients(
     let w =
         crate::methods::wing::wing_alone_with_section(case, condition_index, alpha_deg, section)
             .map_err(|e| format!("wing alone: {e}"))?;
-    let warnings = w
+    let mut warnings: Vec<String> = w
         .warnings
         .iter()
         .map(|x| format!("wing alone: {x}"))
         .collect();
     let mut s = StaticCoefficients::empty(alpha_deg.len());
+    // Sideslip derivatives of the wing alone (DATCOM 5.1.2.1).
+    match crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w) {
+        Ok(lat) => {
+            warnings.extend(
+                lat.warnings
+                    .iter()
+                    .map(|x| format!("wing alone, sideslip: {x}")),
+            );
+            s.cyb = lat.cyb;
+            s.cnb = lat.cnb;
+            s.clb = lat.clb;
+        }
+        Err(e) => warnings.push(format!("wing alone, sideslip: {e}")),
+    }
     s.cd = w.cd;
     s.cl = w.cl;
     s.cm = w.cm;
@@ -227,6 +251,40 @@ fn wing_alone_coefficients(
 pub const WING_ALONE: &str = "WING ALONE CONFIGURATION";
 /// The original's configuration line for the wing and body.
 pub const WING_BODY: &str = "WING-BODY CONFIGURATION";
+/// The original's configuration lines with tails.
+pub const WING_BODY_HT: &str = "WING-BODY-HORIZONTAL TAIL CONFIGURATION";
+pub const WING_BODY_VT: &str = "WING-BODY-VERTICAL TAIL CONFIGURATION";
+pub const WING_BODY_VT_HT: &str = "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION";
+
+fn coefficients(c: &crate::methods::tail::Coefficients) -> StaticCoefficients {
+    let mut s = StaticCoefficients::empty(c.cd.len());
+    s.cd = c.cd.clone();
+    s.cl = c.cl.clone();
+    s.cm = c.cm.clone();
+    s.cn = c.cn.clone();
+    s.ca = c.ca.clone();
+    s.xcp = c.xcp.clone();
+    s.cla = c.cla_per_rad.clone();
+    s.cma = c.cma_per_rad.clone();
+    s
+}
+
+/// A configuration with tails at one condition (DATCOM 4.4, 4.5, totals), taken from the
+/// totals computed once for the condition.
+fn tail_configuration_coefficients(
+    totals: &Result<crate::methods::tail::ConfigurationTotals, String>,
+    part: &str,
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    let t = totals.as_ref().map_err(Clone::clone)?;
+    let c = match part {
+        WING_BODY_HT => t.wing_body_horizontal_tail.as_ref(),
+        WING_BODY_VT => t.wing_body_vertical_tail.as_ref(),
+        _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
+    }
+    .ok_or_else(|| format!("{part}: not computed"))?;
+    let warnings = t.warnings.iter().map(|w| format!("tails: {w}")).collect();
+    Ok((coefficients(c), warnings))
+}
 
 /// The wing-body coefficients at one condition (DATCOM 4.3), or the reason there are none.
 fn wing_body_coefficients(
@@ -341,13 +399,21 @@ pub fn run_case(case: &Case) -> CaseResults {
         let configuration = configuration_name(case);
         // Component configurations: the configuration itself when it is one component, and
         // with BUILD the parts of the build-up the methods so far compute.
-        let parts: [(&str, bool); 3] = [
+        let wb = case.wing.is_some() && case.body.is_some();
+        let (ht, vt) = (case.horizontal_tail.is_some(), case.vertical_tail.is_some());
+        let parts: [(&str, bool); 6] = [
             (BODY_ALONE, case.body.is_some()),
             (WING_ALONE, case.wing.is_some()),
-            (WING_BODY, case.wing.is_some() && case.body.is_some()),
+            (WING_BODY, wb),
+            (WING_BODY_HT, wb && ht),
+            (WING_BODY_VT, wb && vt),
+            (WING_BODY_VT_HT, wb && ht && vt),
         ];
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;
+            // The configurations with tails come from one computation per condition.
+            let mut totals: Option<Result<crate::methods::tail::ConfigurationTotals, String>> =
+                None;
             for (part, present) in parts {
                 let own = configuration == part;
                 if !present || !(own || case.cards.build) {
@@ -356,7 +422,14 @@ pub fn run_case(case: &Case) -> CaseResults {
                 let computed = match part {
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
                     WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg, wing_section),
-                    _ => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),
+                    WING_BODY => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),
+                    _ => {
+                        let t = totals.get_or_insert_with(|| {
+                            crate::methods::tail::configuration(case, index, &f.alpha_deg)
+                                .map_err(|e| format!("configuration with tails: {e}"))
+                        });
+                        tail_configuration_coefficients(t, part)
+                    }
                 };
                 let mut entry = ConditionResults {
                     condition: c.clone(),
@@ -389,6 +462,9 @@ pub fn run_case(case: &Case) -> CaseResults {
             }
         }
     }
+    // The same warning from several configurations of a condition is said once.
+    let mut seen = std::collections::BTreeSet::new();
+    warnings.retain(|w| seen.insert(w.clone()));
     CaseResults {
         number: case.number,
         caseid: case.caseid.clone(),

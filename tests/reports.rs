@@ -90,8 +90,8 @@ fn json_has_the_documented_shape() {
             "dynamic.{key}"
         );
     }
-    // Coefficients are not computed yet: null, never a number made up.
-    assert!(k["static"]["CL"][0].is_null());
+    // Side-force derivatives are not computed yet: null, never a number made up.
+    assert!(k["static"]["CYB"][0].is_null());
     // Deck units: metres and kelvins under DIM M.
     assert_eq!(k["altitude"], 0.0);
     assert!((k["temperature"].as_f64().unwrap() - 288.15).abs() < 1e-9);

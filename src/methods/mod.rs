@@ -2,6 +2,8 @@
 //! function over geometry and flight conditions that returns its named terms and warnings.
 
 pub mod body;
+pub mod lateral;
 pub mod section;
+pub mod tail;
 pub mod wing;
 pub mod wing_body;

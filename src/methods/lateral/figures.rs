@@ -1,0 +1,48 @@
+//! The charts the lateral methods read (files under charts/lateral/), by DATCOM figure id, and
+//! one way of reading them that turns chart warnings into lateral warnings.
+
+use super::{LateralError, LateralWarning};
+use crate::charts;
+
+/// 5.1.2.1-27: (Clβ/CL) of the half-chord sweep, per deg (taper, A, |Λc/2|).
+pub const SWEEP_ROLL_PER_LIFT: &str = "5.1.2.1-27";
+/// 5.1.2.1-28a: its compressibility factor K_MΛ (A/cos Λc/2, M cos Λc/2).
+pub const SWEEP_COMPRESSIBILITY: &str = "5.1.2.1-28a";
+/// 5.1.2.1-28b: (Clβ/CL) of the aspect ratio, per deg (taper, A).
+pub const ASPECT_ROLL_PER_LIFT: &str = "5.1.2.1-28b";
+/// 5.1.2.1-29: Clβ/Γ, per deg² (taper, |Λc/2|, A).
+pub const DIHEDRAL_ROLL: &str = "5.1.2.1-29";
+/// 5.1.2.1-30a: its compressibility factor K_MΓ (A/cos Λc/2, M cos Λc/2).
+pub const DIHEDRAL_COMPRESSIBILITY: &str = "5.1.2.1-30a";
+/// 5.1.2.1-30b: ΔClβ/(θ tan Λc/4), per deg² (taper, A).
+pub const TWIST_ROLL: &str = "5.1.2.1-30b";
+
+/// Every chart the lateral methods read.
+pub const ALL: &[&str] = &[
+    SWEEP_ROLL_PER_LIFT,
+    SWEEP_COMPRESSIBILITY,
+    ASPECT_ROLL_PER_LIFT,
+    DIHEDRAL_ROLL,
+    DIHEDRAL_COMPRESSIBILITY,
+    TWIST_ROLL,
+];
+
+/// The chart's value at `args`; leaving its data is a warning.
+pub fn read(
+    id: &'static str,
+    args: &[f64],
+    warnings: &mut Vec<LateralWarning>,
+) -> Result<f64, LateralError> {
+    let chart = charts::get(id).ok_or(LateralError::MissingChart { chart: id })?;
+    let found = chart.lookup(args);
+    for w in found.warnings {
+        let w = LateralWarning::Chart(w);
+        if !warnings.contains(&w) {
+            warnings.push(w);
+        }
+    }
+    found.value.ok_or_else(|| LateralError::ChartNoValue {
+        chart: id,
+        args: args.to_vec(),
+    })
+}

@@ -1,0 +1,119 @@
+//! Static lateral-directional derivatives at subsonic speeds: CYβ, Cnβ and Clβ of the original's
+//! `BODY ALONE` and `WING ALONE CONFIGURATION` pages.
+//!
+//! Methods (DATCOM sections; the original's routines):
+//! - body alone, DATCOM 5.2.1.1 as the original codes it (M04O04, M06O06): the side force and
+//!   yawing moment follow from the body's lift and pitching-moment slopes, no rolling moment;
+//!   module `body`;
+//! - wing alone, DATCOM 5.1.2.1 (SUBLAT): Clβ from sweep, aspect ratio, taper, twist, dihedral
+//!   and compressibility; CYβ and Cnβ from the wing's lift (the original's wing terms of
+//!   SUBLAT with the Mach-0 lift of CLMCH0); module `wing`.
+//!
+//! Not covered: wing-body, tail and total configurations (5.2.2.1, 5.2.3.1, 5.3.1.x), Mach
+//! numbers above STMACH, non-uniform dihedral (figure 5.1.2.1-31), low-aspect-ratio wing-body
+//! pages ($LARWB).
+//!
+//! Axes, signs and units of every output: sideslip β positive nose left (wind from the
+//! right); CY positive to the right, Cl positive right wing down, Cn positive nose right; all
+//! per radian of sideslip, on the reference area S and, for the moments, the lateral reference
+//! length b ($OPTINS BLREF, else the wing's span 2·SSPN).
+//!
+//! Where this differs from the original, see `docs/lateral.md`.
+
+mod body;
+pub mod figures;
+mod wing;
+
+use std::fmt;
+
+use serde::Serialize;
+
+use crate::charts::ChartWarning;
+use crate::methods::wing::WingMethodError;
+
+pub use body::body_lateral;
+pub use wing::{wing_lateral, RollingMomentTerms, WingLateralTerms};
+
+/// Why the lateral derivatives cannot be computed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum LateralError {
+    #[error("the case has no wing ($WGPLNF)")]
+    NoWing,
+    #[error("no flight condition {index}")]
+    NoCondition { index: usize },
+    #[error("the wing results have {found} angles of attack, the schedule has {expected}")]
+    AngleCount { expected: usize, found: usize },
+    #[error("the wing planform is incomplete: {reason}")]
+    Geometry { reason: String },
+    #[error("no lateral reference length: give BLREF in $OPTINS")]
+    NoReferenceSpan,
+    #[error("chart {chart} is not embedded or not valid")]
+    MissingChart { chart: &'static str },
+    #[error("chart {chart} gives no value at {args:?}")]
+    ChartNoValue { chart: &'static str, args: Vec<f64> },
+}
+
+/// What the caller should know about a result.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum LateralWarning {
+    /// A chart was read outside its data.
+    Chart(ChartWarning),
+    /// No lateral reference length (BLREF, or a wing's span): no Cnβ, Clβ.
+    NoReferenceSpan,
+    /// The wing lift at Mach 0 (the CYβ term) cannot be computed: no CYβ.
+    NoMachZeroLift { reason: String },
+    /// Non-uniform dihedral (SSPNDD given): figure 5.1.2.1-31 is not covered, no Clβ.
+    NonUniformDihedral,
+}
+
+impl fmt::Display for LateralWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LateralWarning::Chart(w) => write!(f, "{w}"),
+            LateralWarning::NoReferenceSpan => write!(
+                f,
+                "no lateral reference length (BLREF or a wing span): no CNB, CLB"
+            ),
+            LateralWarning::NoMachZeroLift { reason } => {
+                write!(f, "no wing lift at Mach 0, so no wing CYB: {reason}")
+            }
+            LateralWarning::NonUniformDihedral => write!(
+                f,
+                "non-uniform dihedral (SSPNDD): figure 5.1.2.1-31 is not covered, no wing CLB"
+            ),
+        }
+    }
+}
+
+/// The static lateral-directional derivatives at each angle of attack of the schedule, per
+/// radian of sideslip. `None` where a value cannot be computed or the method does not apply.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Lateral {
+    pub alpha_deg: Vec<f64>,
+    /// Side-force derivative CYβ, per radian.
+    pub cyb: Vec<Option<f64>>,
+    /// Yawing-moment derivative Cnβ, per radian.
+    pub cnb: Vec<Option<f64>>,
+    /// Rolling-moment derivative Clβ, per radian.
+    pub clb: Vec<Option<f64>>,
+    /// The wing method's named terms (none for the body).
+    pub wing_terms: Option<WingLateralTerms>,
+    pub warnings: Vec<LateralWarning>,
+}
+
+impl From<WingMethodError> for LateralError {
+    fn from(e: WingMethodError) -> Self {
+        LateralError::Geometry {
+            reason: e.to_string(),
+        }
+    }
+}
+
+/// A finite value, else none.
+fn finite(v: f64) -> Option<f64> {
+    v.is_finite().then_some(v)
+}

@@ -1,0 +1,477 @@
+//! Wing alone: CYβ, Cnβ and Clβ, DATCOM 5.1.2.1 (the original's SUBLAT, wing terms).
+
+use std::f64::consts::PI;
+
+use serde::Serialize;
+
+use super::body::lateral_reference_span;
+use super::figures::{self, read};
+use super::{finite, Lateral, LateralError, LateralWarning};
+use crate::case::units::from_si;
+use crate::case::Case;
+use crate::deck::schema::Dimension;
+use crate::methods::wing::{
+    computed_wing_section, wing_alone_with_section, WingAlone, WingPlanform, WingType,
+};
+use crate::results::planform_area_and_mac;
+
+/// Degrees per radian: the charts and the original's equations are per degree.
+const DEG_PER_RAD: f64 = 180.0 / PI;
+/// Below this theoretical aspect ratio Clβ takes the low-aspect-ratio form (5.1.2.1, A < 1).
+const LOW_ASPECT_RATIO: f64 = 1.0;
+/// Side force per degree of effective dihedral per degree of sideslip (the original's
+/// empirical dihedral term of the wing CYβ).
+const CYB_PER_DIHEDRAL: f64 = 0.0001;
+
+/// The terms behind the wing derivatives.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WingLateralTerms {
+    /// Theoretical aspect ratio and taper ratio of the whole planform.
+    pub aspect_ratio: f64,
+    pub taper: f64,
+    /// Theoretical area, m², and span 2·SSPN, m.
+    pub theoretical_area: f64,
+    pub span: f64,
+    /// Effective uniform dihedral, deg: (Γ_i (b'/2 − y_d) + Γ_o y_d)/(b'/2), b'/2 the
+    /// exposed semispan, y_d = SSPNDD.
+    pub effective_dihedral_deg: f64,
+    /// Wing CL at Mach 0 at each angle (the CYβ equation's reference lift).
+    pub cl_mach_zero: Vec<Option<f64>>,
+    /// The chart values of Clβ (none for the low-aspect-ratio form and non-uniform dihedral).
+    pub rolling_moment: Option<RollingMomentTerms>,
+}
+
+/// Chart values of the Clβ method, per degree.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "planform", rename_all = "snake_case")]
+pub enum RollingMomentTerms {
+    /// Straight tapered wing (figures 5.1.2.1-27 to -30).
+    Straight {
+        sweep_per_cl: f64,
+        sweep_compressibility: f64,
+        aspect_per_cl: f64,
+        dihedral: f64,
+        dihedral_compressibility: f64,
+        twist: f64,
+    },
+    /// Double-delta and cranked wings: the inboard panel and the extended outboard panel
+    /// (sweep term × compressibility + aspect-ratio term, per unit lift), each weighted by
+    /// its lift.
+    Panels {
+        inboard_per_cl: f64,
+        outboard_per_cl: f64,
+    },
+}
+
+/// Sweep, aspect-ratio and compressibility terms of one trapezoidal panel, DATCOM 5.1.2.1
+/// equation (b) without dihedral and twist: (Clβ/CL)_Λ·K_MΛ + (Clβ/CL)_A per degree; for
+/// A < 1 the slender-wing value −2/(3A) per radian.
+fn panel_roll_per_cl(
+    aspect_ratio: f64,
+    taper: f64,
+    half_chord_sweep_deg: f64,
+    cos_half_chord: f64,
+    mach: f64,
+    warnings: &mut Vec<LateralWarning>,
+) -> Result<f64, LateralError> {
+    if aspect_ratio < LOW_ASPECT_RATIO {
+        return Ok(-2.0 / (3.0 * DEG_PER_RAD * aspect_ratio));
+    }
+    let sweep = read(
+        figures::SWEEP_ROLL_PER_LIFT,
+        &[taper, aspect_ratio, half_chord_sweep_deg.abs()],
+        warnings,
+    )?;
+    let km = read(
+        figures::SWEEP_COMPRESSIBILITY,
+        &[aspect_ratio / cos_half_chord, mach * cos_half_chord],
+        warnings,
+    )?;
+    let aspect = read(
+        figures::ASPECT_ROLL_PER_LIFT,
+        &[taper, aspect_ratio],
+        warnings,
+    )?;
+    Ok(sweep * km + aspect)
+}
+
+/// The wing-alone CYβ, Cnβ and Clβ at subsonic speed for flight condition `condition_index`
+/// of `case`, from the wing-alone results `wing` at the schedule angles `alpha_deg`.
+///
+/// DATCOM 5.1.2.1 (Clβ; figures 5.1.2.1-27, -28a, -28b, -29, -30a, -30b), with the side
+/// force and yawing moment the original's SUBLAT computes for the wing alone:
+///
+/// - CYβ = (A + 4cos Λ)/(Aβ_Λ + 4cos Λ) · CL·[CL₀·6 tan Λ sin Λ/(πA(A + 4cos Λ)) − 0.0001|Γ|/CL₀]
+///   per degree, where Λ is the quarter-chord sweep of the planform, β_Λ = √(1 − M²cos²Λ), CL
+///   the wing's lift at this Mach number and CL₀ its lift at Mach 0 at the same angle (zero when
+///   CL₀ is zero);
+/// - Cnβ = (A + 4cos Λ)/(Aβ_Λ + 4cos Λ) · ((Aβ_Λ)² + 4Aβ_Λ cos Λ − 8cos²Λ)/(A² + 4A cos Λ −
+///   8cos²Λ) · [1/(4πA) − |tan Λ|/(πA(A + 4cos Λ))·(cos Λ − A/2 − A²/(8cos Λ) + 6 x̄ |sin Λ|/A)]
+///   · CL² · b_w S/(b S_exposed) per degree, the DATCOM 5.1.3.1 form with x̄ = (CM/CN)/c̄ (the
+///   original divides the centre of pressure, already in reference lengths, by c̄ once more, in
+///   the deck's length unit);
+/// - Clβ, straight wings with A ≥ 1 and uniform dihedral (equation b):
+///   [CL·S/S_w·((Clβ/CL)_Λ K_MΛ + (Clβ/CL)_A) + θ tan Λc/4,i ΔClβ/(θ tan Λc/4) + Γ (Clβ/Γ) K_MΓ]
+///   · S_w/S · b_w/b; A < 1: [−2/(3A)·CL − ΓA/6·S_w/S]·b_w/b per radian (per deg² for Γ);
+///   double-delta and cranked wings: the lift-weighted panel values, the inboard panel on its
+///   theoretical planform scaled by its exposed span fraction, the outboard panel extended to
+///   mid inboard panel, without dihedral and twist.
+///
+/// A is the theoretical aspect ratio, S_w the theoretical area, b_w = 2·SSPN, S the reference
+/// area, b the lateral reference length (BLREF, else b_w), Γ the effective dihedral. Per
+/// radian. Errors: no wing, no condition, wing results of another schedule, charts.
+pub fn wing_lateral(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    wing: &WingAlone,
+) -> Result<Lateral, LateralError> {
+    let plan = case.wing.as_ref().ok_or(LateralError::NoWing)?;
+    let condition = case
+        .conditions
+        .get(condition_index)
+        .ok_or(LateralError::NoCondition {
+            index: condition_index,
+        })?;
+    let n = alpha_deg.len();
+    if wing.cl.len() != n {
+        return Err(LateralError::AngleCount {
+            expected: n,
+            found: wing.cl.len(),
+        });
+    }
+    let missing = |what: &str| LateralError::Geometry {
+        reason: format!("{what} is not given"),
+    };
+    let semispan = plan.sspn.ok_or_else(|| missing("SSPN"))?;
+    let root = plan.chrdr.ok_or_else(|| missing("CHRDR"))?;
+    let tip = plan.chrdtp.unwrap_or(0.0);
+    let exposed_semispan = plan.sspne.unwrap_or(semispan);
+    let (area, _) = planform_area_and_mac(plan).ok_or_else(|| missing("the planform"))?;
+    if !(semispan > 0.0 && root > 0.0 && area > 0.0 && exposed_semispan > 0.0) {
+        return Err(LateralError::Geometry {
+            reason: "SSPN, SSPNE, CHRDR and the area must be positive".into(),
+        });
+    }
+    let mut warnings = Vec::new();
+    let p: &WingPlanform = &wing.terms.planform;
+    let span = 2.0 * semispan;
+    let aspect_ratio = span * span / area;
+    let taper = tip / root;
+    let s_ref = wing.reference_area;
+    let b_ref = lateral_reference_span(case);
+    if b_ref.is_none() {
+        warnings.push(LateralWarning::NoReferenceSpan);
+    }
+    let mach = condition.mach;
+
+    // Effective dihedral (as the original's lateral geometry).
+    let dihedral_in = plan.dhdadi_deg.unwrap_or(0.0);
+    let dihedral_station = plan.sspndd.unwrap_or(0.0);
+    let dihedral_out = plan.dhdado_deg.unwrap_or(dihedral_in);
+    let effective_dihedral_deg = (dihedral_in * (exposed_semispan - dihedral_station)
+        + dihedral_out * dihedral_station)
+        / exposed_semispan;
+
+    let quarter = p.quarter_chord;
+    let (sin_q, cos_q, tan_q) = (quarter.deg.to_radians().sin(), quarter.cos, quarter.tan);
+    let beta_sweep = (1.0 - (mach * cos_q).powi(2)).abs().sqrt();
+    let a = aspect_ratio;
+    let compressible = (a + 4.0 * cos_q) / (a * beta_sweep + 4.0 * cos_q);
+
+    // CYβ: the lift at Mach 0 is the equation's reference lift.
+    let cl_mach_zero = mach_zero_lift(case, condition_index, alpha_deg, &mut warnings);
+    let sweep_term = 6.0 * tan_q * sin_q / (PI * a * (a + 4.0 * cos_q));
+    let cyb: Vec<Option<f64>> = (0..n)
+        .map(|k| {
+            let cl = wing.cl[k]?;
+            let cl0 = cl_mach_zero[k]?;
+            if cl0 == 0.0 {
+                return Some(0.0);
+            }
+            let per_cl0 = cl0 * cl0 * sweep_term / DEG_PER_RAD
+                - CYB_PER_DIHEDRAL * effective_dihedral_deg.abs();
+            finite(compressible * per_cl0 / cl0 * cl * DEG_PER_RAD)
+        })
+        .collect();
+
+    // Cnβ.
+    let chord_in_deck_units = from_si(wing.reference_length, case.dim, Dimension::Length);
+    let ab = a * beta_sweep;
+    let mach_ratio = (ab * ab + 4.0 * ab * cos_q - 8.0 * cos_q * cos_q)
+        / (a * a + 4.0 * a * cos_q - 8.0 * cos_q * cos_q);
+    let cnb: Vec<Option<f64>> = (0..n)
+        .map(|k| {
+            let cl = wing.cl[k]?;
+            let b = b_ref?;
+            let cn = wing.cn[k]?;
+            let centre = if cn == 0.0 {
+                0.0
+            } else {
+                6.0 * (wing.cm[k]? / cn / chord_in_deck_units) * sin_q.abs() / a
+            };
+            let bracket = 1.0 / (4.0 * PI * a)
+                - tan_q.abs() / (PI * a * (a + 4.0 * cos_q))
+                    * (cos_q - a / 2.0 - a * a / (8.0 * cos_q) + centre);
+            finite(
+                compressible * mach_ratio * bracket * cl * cl * span * s_ref / (b * p.exposed_area),
+            )
+        })
+        .collect();
+
+    // Clβ.
+    let (clb, rolling_moment) = match b_ref {
+        None => (vec![None; n], None),
+        Some(b) => rolling_moment(
+            &RollInputs {
+                case,
+                wing,
+                aspect_ratio: a,
+                taper,
+                area,
+                span,
+                b_ref: b,
+                mach,
+                dihedral_in,
+                effective_dihedral_deg,
+            },
+            &mut warnings,
+        )?,
+    };
+
+    Ok(Lateral {
+        alpha_deg: alpha_deg.to_vec(),
+        cyb,
+        cnb,
+        clb,
+        wing_terms: Some(WingLateralTerms {
+            aspect_ratio,
+            taper,
+            theoretical_area: area,
+            span,
+            effective_dihedral_deg,
+            cl_mach_zero,
+            rolling_moment,
+        }),
+        warnings,
+    })
+}
+
+struct RollInputs<'a> {
+    case: &'a Case,
+    wing: &'a WingAlone,
+    aspect_ratio: f64,
+    taper: f64,
+    area: f64,
+    span: f64,
+    b_ref: f64,
+    mach: f64,
+    dihedral_in: f64,
+    effective_dihedral_deg: f64,
+}
+
+type RollResult = (Vec<Option<f64>>, Option<RollingMomentTerms>);
+
+/// Clβ per radian at each angle, DATCOM 5.1.2.1 (see [`wing_lateral`]).
+fn rolling_moment(
+    r: &RollInputs,
+    warnings: &mut Vec<LateralWarning>,
+) -> Result<RollResult, LateralError> {
+    let plan = r.case.wing.as_ref().ok_or(LateralError::NoWing)?;
+    let wing = r.wing;
+    let p = &wing.terms.planform;
+    let s_ref = wing.reference_area;
+    let a = r.aspect_ratio;
+    let span_ratio = r.span / r.b_ref;
+    let per_cl = |k: usize, f: &dyn Fn(f64) -> f64| wing.cl[k].and_then(|cl| finite(f(cl)));
+    let n = wing.cl.len();
+    if wing.planform_type == WingType::Straight {
+        if a < LOW_ASPECT_RATIO {
+            let dihedral = r.effective_dihedral_deg * a / (6.0 * DEG_PER_RAD * DEG_PER_RAD);
+            let clb = (0..n)
+                .map(|k| {
+                    per_cl(k, &|cl| {
+                        (-2.0 / (3.0 * DEG_PER_RAD * a) * cl - dihedral * r.area / s_ref)
+                            * span_ratio
+                            * DEG_PER_RAD
+                    })
+                })
+                .collect();
+            return Ok((clb, None));
+        }
+        if plan.sspndd.is_some_and(|y| y != 0.0) {
+            warnings.push(LateralWarning::NonUniformDihedral);
+            return Ok((vec![None; n], None));
+        }
+        let half = p.inboard.half_chord;
+        let x_aspect = a / half.cos;
+        let x_mach = r.mach * half.cos;
+        let mut sweep_per_cl = read(
+            figures::SWEEP_ROLL_PER_LIFT,
+            &[r.taper, a, half.deg.abs()],
+            warnings,
+        )?;
+        // The original takes the magnitude of the chart value for a forward-swept half chord.
+        if half.deg < 0.0 {
+            sweep_per_cl = sweep_per_cl.abs();
+        }
+        let sweep_compressibility = read(
+            figures::SWEEP_COMPRESSIBILITY,
+            &[x_aspect, x_mach],
+            warnings,
+        )?;
+        let aspect_per_cl = read(figures::ASPECT_ROLL_PER_LIFT, &[r.taper, a], warnings)?;
+        let twist = read(figures::TWIST_ROLL, &[r.taper, a], warnings)?;
+        let dihedral_compressibility = read(
+            figures::DIHEDRAL_COMPRESSIBILITY,
+            &[x_aspect, x_mach],
+            warnings,
+        )?;
+        let dihedral = read(
+            figures::DIHEDRAL_ROLL,
+            &[r.taper, half.deg.abs(), a],
+            warnings,
+        )?;
+        let tan_quarter_in = 0.5 * (p.inboard.leading_edge.tan + p.inboard.half_chord.tan);
+        let twist_term = plan.twista_deg.unwrap_or(0.0) * tan_quarter_in * twist;
+        let dihedral_term = r.dihedral_in * dihedral * dihedral_compressibility;
+        let lift_term = sweep_per_cl * sweep_compressibility + aspect_per_cl;
+        let clb = (0..n)
+            .map(|k| {
+                per_cl(k, &|cl| {
+                    (lift_term * cl * s_ref / r.area + twist_term + dihedral_term) * r.area / s_ref
+                        * span_ratio
+                        * DEG_PER_RAD
+                })
+            })
+            .collect();
+        return Ok((
+            clb,
+            Some(RollingMomentTerms::Straight {
+                sweep_per_cl,
+                sweep_compressibility,
+                aspect_per_cl,
+                dihedral,
+                dihedral_compressibility,
+                twist,
+            }),
+        ));
+    }
+
+    // Double delta and cranked: the inboard panel on its theoretical planform and the outboard
+    // panel extended to mid inboard panel, weighted by their lift.
+    let geometry = |what: &str| LateralError::Geometry {
+        reason: format!("a two-panel planform needs {what}"),
+    };
+    let outboard = p.outboard.ok_or_else(|| geometry("an outboard panel"))?;
+    let extended = p
+        .extended_outboard
+        .ok_or_else(|| geometry("an outboard panel"))?;
+    let slope = &wing.terms.lift_curve_slope;
+    let (slope_in, slope_out) = slope
+        .inboard_panel_per_rad
+        .zip(slope.extended_outboard_per_rad)
+        .ok_or_else(|| geometry("the panel lift-curve slopes"))?;
+    let root = plan.chrdr.unwrap_or(0.0);
+    let break_chord = plan.chrdbp.ok_or_else(|| geometry("CHRDBP"))?;
+    let outboard_span = plan.sspnop.ok_or_else(|| geometry("SSPNOP"))?;
+    let semispan = r.span / 2.0;
+    let inboard_span = semispan - outboard_span;
+    let inboard_aspect = 4.0 * inboard_span / (root + break_chord);
+    let inboard_taper = break_chord / root;
+    let inboard = panel_roll_per_cl(
+        inboard_aspect,
+        inboard_taper,
+        p.inboard.half_chord.deg,
+        p.inboard.half_chord.cos,
+        r.mach,
+        warnings,
+    )?;
+    let outboard_per_cl = panel_roll_per_cl(
+        extended.aspect_ratio,
+        extended.taper,
+        outboard.half_chord.deg,
+        outboard.half_chord.cos,
+        r.mach,
+        warnings,
+    )?;
+    let lift_in = slope_in * p.inboard.area / s_ref;
+    let lift_out = slope_out * extended.area / s_ref;
+    let exposed_inboard_fraction = (p.exposed_semispan - outboard_span) / semispan;
+    let weighted = lift_in * inboard * exposed_inboard_fraction + lift_out * outboard_per_cl;
+    let total_lift = lift_in + lift_out;
+    let clb = (0..n)
+        .map(|k| {
+            per_cl(k, &|cl| {
+                cl / total_lift * weighted * span_ratio * DEG_PER_RAD
+            })
+        })
+        .collect();
+    Ok((
+        clb,
+        Some(RollingMomentTerms::Panels {
+            inboard_per_cl: inboard,
+            outboard_per_cl,
+        }),
+    ))
+}
+
+/// The wing's CL at Mach 0 at each angle (the original's CLMCH0): the wing-alone method at
+/// M = 0 with the first Mach number's section lift-curve slope and, for the section maximum
+/// lift, CLMAXL in place of the first CLMAX, at this condition's Reynolds number. None, with a
+/// warning, when it cannot be computed.
+fn mach_zero_lift(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    warnings: &mut Vec<LateralWarning>,
+) -> Vec<Option<f64>> {
+    let n = alpha_deg.len();
+    let (Some(first), Some(this)) = (
+        case.conditions.first(),
+        case.conditions.get(condition_index),
+    ) else {
+        return vec![None; n];
+    };
+    let mut at_rest = case.clone();
+    let mut condition = first.clone();
+    condition.mach = 0.0;
+    condition.mach_index = 0;
+    condition.reynolds_per_length = this.reynolds_per_length;
+    at_rest.conditions = vec![condition];
+    if let Some(section) = at_rest.sections.get_mut("WING") {
+        let low_aspect = section.scalars.get("CLMAXL").copied();
+        if let Some(clmax) = section.per_mach.get_mut("CLMAX") {
+            if let Some(first) = clmax.first_mut() {
+                *first = low_aspect.unwrap_or(f64::NAN);
+            }
+        }
+    }
+    let computed = match computed_wing_section(case).transpose() {
+        Ok(c) => c.map(|mut c| {
+            c.per_mach.truncate(1);
+            c
+        }),
+        Err(e) => {
+            warnings.push(LateralWarning::NoMachZeroLift {
+                reason: e.to_string(),
+            });
+            return vec![None; n];
+        }
+    };
+    match wing_alone_with_section(&at_rest, 0, alpha_deg, computed.as_ref()) {
+        Ok(w) if w.cl.len() == n => w.cl,
+        Ok(_) => {
+            warnings.push(LateralWarning::NoMachZeroLift {
+                reason: "the lift curve is not computed".into(),
+            });
+            vec![None; n]
+        }
+        Err(e) => {
+            warnings.push(LateralWarning::NoMachZeroLift {
+                reason: e.to_string(),
+            });
+            vec![None; n]
+        }
+    }
+}
