@@ -27,6 +27,7 @@ pub mod deck;
 pub mod error;
 pub mod geometry;
 pub mod methods;
+pub mod numeric;
 pub mod report;
 pub mod results;
 

@@ -9,6 +9,7 @@
 use serde::Serialize;
 
 use crate::case::Body;
+use crate::numeric::trapezoid;
 
 /// Stations the wetted area is integrated over: the body length divided equally, as the
 /// original resamples it (EQSPCE).
@@ -58,14 +59,6 @@ pub struct BodyGeometry {
     pub volume: f64,
     /// Planform area: twice the integral of the equivalent radius, m².
     pub planform_area: f64,
-}
-
-/// Trapezoidal integral of `f` over `x`.
-fn trapezoid(x: &[f64], f: &[f64]) -> f64 {
-    x.windows(2)
-        .zip(f.windows(2))
-        .map(|(x, f)| 0.5 * (x[1] - x[0]) * (f[1] + f[0]))
-        .sum()
 }
 
 /// `f` at `at`, linear between stations and clamped beyond the ends.

@@ -2,6 +2,7 @@
 //! the way the original's body routines read them (TBFUNX for values and slopes, EQSPC1 for the
 //! 20 equally spaced stations, TRAPZ for the integrals), in double precision.
 
+pub use crate::numeric::{parabola_slope, trapezoid};
 /// Stations the body routines resample a table onto before integrating (EQSPC1/EQSPCE).
 pub const RESAMPLED_STATIONS: usize = 20;
 
@@ -33,20 +34,6 @@ pub fn interpolate(x: &[f64], f: &[f64], at: f64) -> f64 {
         return f[k + 1];
     }
     f[k] + (at - x[k]) / h * (f[k + 1] - f[k])
-}
-
-/// Slope at `at` of the parabola through three points; `None` when two abscissae coincide.
-pub fn parabola_slope(x: [f64; 3], y: [f64; 3], at: f64) -> Option<f64> {
-    let d01 = x[0] - x[1];
-    let d02 = x[0] - x[2];
-    let d12 = x[1] - x[2];
-    if d01 == 0.0 || d02 == 0.0 || d12 == 0.0 {
-        return None;
-    }
-    let s = y[0] * ((at - x[1]) + (at - x[2])) / (d01 * d02)
-        - y[1] * ((at - x[0]) + (at - x[2])) / (d01 * d12)
-        + y[2] * ((at - x[0]) + (at - x[1])) / (d02 * d12);
-    s.is_finite().then_some(s)
 }
 
 fn chord_slope(x0: f64, x1: f64, y0: f64, y1: f64) -> Option<f64> {
@@ -126,14 +113,6 @@ impl Resampled {
     pub fn integral(&self) -> f64 {
         trapezoid(&self.x, &self.f)
     }
-}
-
-/// Trapezoidal integral of `f` over `x`.
-pub fn trapezoid(x: &[f64], f: &[f64]) -> f64 {
-    x.windows(2)
-        .zip(f.windows(2))
-        .map(|(x, f)| 0.5 * (x[1] - x[0]) * (f[1] + f[0]))
-        .sum()
 }
 
 /// Index of the first largest value (scanning from the start, strictly greater; NaN ignored).

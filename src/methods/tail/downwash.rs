@@ -7,11 +7,12 @@ use serde::Serialize;
 
 use super::figures;
 use super::surfaces::{low_speed_wing, tail_position, HorizontalTailAlone, LowSpeedWing};
-use super::table::{read, trapezoid, End};
+use super::table::{read, End};
 use super::{TailError, TailWarning};
 use crate::case::Case;
 use crate::geometry::{planform as planform_geometry, Span};
 use crate::methods::wing_body::WingBody;
+use crate::numeric::trapezoid;
 
 /// Which downwash method applies (the original's WGSCHR DWASH, checked against the ratio of
 /// wing span to tail span as its CHECK does).

@@ -98,14 +98,6 @@ pub(crate) fn node_slopes(x: &[f64], y: &[Option<f64>]) -> Vec<Option<f64>> {
         .collect()
 }
 
-/// Trapezoidal integral of `f` over `x`.
-pub(crate) fn trapezoid(x: &[f64], f: &[f64]) -> f64 {
-    x.windows(2)
-        .zip(f.windows(2))
-        .map(|(x, f)| 0.5 * (x[1] - x[0]) * (f[1] + f[0]))
-        .sum()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -40,6 +40,7 @@ mod planform;
 mod section_inputs;
 mod zero_lift_angle;
 
+use crate::numeric::curve_slopes;
 use std::fmt;
 
 use serde::Serialize;
@@ -625,43 +626,4 @@ pub fn wing_alone_with_section(
         },
         warnings,
     })
-}
-
-/// Slope of the parabola through three points at `at`.
-fn parabola_slope(x: [f64; 3], y: [f64; 3], at: f64) -> Option<f64> {
-    let d01 = x[0] - x[1];
-    let d02 = x[0] - x[2];
-    let d12 = x[1] - x[2];
-    if d01 == 0.0 || d02 == 0.0 || d12 == 0.0 {
-        return None;
-    }
-    let s = y[0] * ((at - x[1]) + (at - x[2])) / (d01 * d02)
-        - y[1] * ((at - x[0]) + (at - x[2])) / (d01 * d12)
-        + y[2] * ((at - x[0]) + (at - x[1])) / (d02 * d12);
-    s.is_finite().then_some(s)
-}
-
-/// Slope of the curve `f(α)` at each angle, per radian: the parabola through the angle and its
-/// neighbours; through the first or last three at the ends; the chord for two angles. None
-/// where a point it needs is none.
-fn curve_slopes(alpha_rad: &[f64], f: &[Option<f64>]) -> Vec<Option<f64>> {
-    let n = alpha_rad.len();
-    (0..n)
-        .map(|k| {
-            if n < 2 {
-                return None;
-            }
-            if n == 2 {
-                let (a, b) = (f[0]?, f[1]?);
-                let h = alpha_rad[1] - alpha_rad[0];
-                return (h != 0.0).then(|| (b - a) / h);
-            }
-            let j = k.clamp(1, n - 2);
-            parabola_slope(
-                [alpha_rad[j - 1], alpha_rad[j], alpha_rad[j + 1]],
-                [f[j - 1]?, f[j]?, f[j + 1]?],
-                alpha_rad[k],
-            )
-        })
-        .collect()
 }

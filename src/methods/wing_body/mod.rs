@@ -35,6 +35,7 @@ pub mod figures;
 mod lift;
 mod moment;
 
+use crate::numeric::curve_slopes;
 use std::fmt;
 
 use serde::Serialize;
@@ -522,45 +523,6 @@ fn wing_body_drag(
         .collect();
     out.regression = regression;
     Ok(Some(out))
-}
-
-/// Slope of the parabola through three points at `at`.
-fn parabola_slope(x: [f64; 3], y: [f64; 3], at: f64) -> Option<f64> {
-    let d01 = x[0] - x[1];
-    let d02 = x[0] - x[2];
-    let d12 = x[1] - x[2];
-    if d01 == 0.0 || d02 == 0.0 || d12 == 0.0 {
-        return None;
-    }
-    let s = y[0] * ((at - x[1]) + (at - x[2])) / (d01 * d02)
-        - y[1] * ((at - x[0]) + (at - x[2])) / (d01 * d12)
-        + y[2] * ((at - x[0]) + (at - x[1])) / (d02 * d12);
-    s.is_finite().then_some(s)
-}
-
-/// Slope of the curve `f(α)` at each angle, per radian, as the original's TBFUNX takes it at
-/// a node: the parabola through the angle and its neighbours, through the first or last three
-/// at the ends; the chord for two angles, zero for one. None where a point it needs is none.
-fn curve_slopes(alpha_rad: &[f64], f: &[Option<f64>]) -> Vec<Option<f64>> {
-    let n = alpha_rad.len().min(f.len());
-    (0..n)
-        .map(|k| match n {
-            1 => f[0].map(|_| 0.0),
-            2 => {
-                let h = alpha_rad[1] - alpha_rad[0];
-                let (a, b) = (f[0]?, f[1]?);
-                (h != 0.0).then(|| (b - a) / h)
-            }
-            _ => {
-                let j = k.clamp(1, n - 2);
-                parabola_slope(
-                    [alpha_rad[j - 1], alpha_rad[j], alpha_rad[j + 1]],
-                    [f[j - 1]?, f[j]?, f[j + 1]?],
-                    alpha_rad[k],
-                )
-            }
-        })
-        .collect()
 }
 
 #[cfg(test)]

@@ -1,0 +1,71 @@
+//! Small numerical rules shared by the methods: the trapezoidal integral and the slopes of a
+//! curve given at its nodes, as the original program takes them (routines TRAPZ and TBFUNX's
+//! derivative from the parabola through three nodes).
+
+/// Trapezoidal integral of `f` over `x`.
+pub fn trapezoid(x: &[f64], f: &[f64]) -> f64 {
+    x.windows(2)
+        .zip(f.windows(2))
+        .map(|(x, f)| 0.5 * (x[1] - x[0]) * (f[1] + f[0]))
+        .sum()
+}
+
+/// Slope at `at` of the parabola through three points; `None` when two abscissae coincide.
+pub fn parabola_slope(x: [f64; 3], y: [f64; 3], at: f64) -> Option<f64> {
+    let d01 = x[0] - x[1];
+    let d02 = x[0] - x[2];
+    let d12 = x[1] - x[2];
+    if d01 == 0.0 || d02 == 0.0 || d12 == 0.0 {
+        return None;
+    }
+    let s = y[0] * ((at - x[1]) + (at - x[2])) / (d01 * d02)
+        - y[1] * ((at - x[0]) + (at - x[2])) / (d01 * d12)
+        + y[2] * ((at - x[0]) + (at - x[1])) / (d02 * d12);
+    s.is_finite().then_some(s)
+}
+
+/// Slope of the curve `f(α)` at each of its angles (`alpha_rad`, radians), per radian: the
+/// parabola through the angle and its neighbours, through the first or last three at the ends;
+/// the chord for two angles, zero for one. `None` where a point it needs is `None`.
+pub fn curve_slopes(alpha_rad: &[f64], f: &[Option<f64>]) -> Vec<Option<f64>> {
+    let n = alpha_rad.len().min(f.len());
+    (0..n)
+        .map(|k| match n {
+            1 => f[0].map(|_| 0.0),
+            2 => {
+                let h = alpha_rad[1] - alpha_rad[0];
+                let (a, b) = (f[0]?, f[1]?);
+                (h != 0.0).then(|| (b - a) / h)
+            }
+            _ => {
+                let j = k.clamp(1, n - 2);
+                parabola_slope(
+                    [alpha_rad[j - 1], alpha_rad[j], alpha_rad[j + 1]],
+                    [f[j - 1]?, f[j]?, f[j + 1]?],
+                    alpha_rad[k],
+                )
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slopes_of_a_parabola_are_exact() {
+        // f = α² has slope 2α at every node, also at the ends (one parabola fits all).
+        let a = [0.0, 0.1, 0.25, 0.4];
+        let f: Vec<Option<f64>> = a.iter().map(|x| Some(x * x)).collect();
+        for (s, x) in curve_slopes(&a, &f).iter().zip(a) {
+            assert!((s.unwrap() - 2.0 * x).abs() < 1e-12);
+        }
+        assert_eq!(
+            curve_slopes(&[0.0, 1.0], &[Some(1.0), Some(3.0)]),
+            vec![Some(2.0); 2]
+        );
+        assert_eq!(curve_slopes(&[0.0], &[Some(1.0)]), vec![Some(0.0)]);
+        assert_eq!(trapezoid(&[0.0, 1.0, 3.0], &[1.0, 1.0, 1.0]), 3.0);
+    }
+}
