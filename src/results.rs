@@ -300,12 +300,40 @@ fn wing_body_coefficients(
         section,
     )
     .map_err(|e| format!("wing-body: {e}"))?;
-    let warnings = w
+    let mut warnings: Vec<String> = w
         .warnings
         .iter()
         .map(|x| format!("wing-body: {x}"))
         .collect();
     let mut s = StaticCoefficients::empty(alpha_deg.len());
+    // Sideslip derivatives of the wing-body (DATCOM 5.2.2.1, 5.2.3.1), which need the wing
+    // alone as well.
+    let lateral =
+        crate::methods::wing::wing_alone_with_section(case, condition_index, alpha_deg, section)
+            .map_err(|e| e.to_string())
+            .and_then(|wing| {
+                crate::methods::lateral::wing_body_lateral(
+                    case,
+                    condition_index,
+                    alpha_deg,
+                    &wing,
+                    &w,
+                )
+                .map_err(|e| e.to_string())
+            });
+    match lateral {
+        Ok(lat) => {
+            warnings.extend(
+                lat.warnings
+                    .iter()
+                    .map(|x| format!("wing-body, sideslip: {x}")),
+            );
+            s.cyb = lat.cyb;
+            s.cnb = lat.cnb;
+            s.clb = lat.clb;
+        }
+        Err(e) => warnings.push(format!("wing-body, sideslip: {e}")),
+    }
     s.cd = w.cd;
     s.cl = w.cl;
     s.cm = w.cm;

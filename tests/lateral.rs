@@ -1,7 +1,7 @@
 //! Static lateral-directional derivatives at subsonic speeds (src/methods/lateral) against the
-//! original program, for the body alone and the wing alone.
+//! original program, for the body alone, the wing alone and the wing-body.
 //!
-//! Oracle: every `BODY ALONE` and `WING ALONE CONFIGURATION` static table of
+//! Oracle: every `BODY ALONE`, `WING ALONE` and `WING-BODY CONFIGURATION` static table of
 //! ../shared/oracle/cases/*/for006.dat whose flight condition is subsonic (Mach ≤ STMACH),
 //! columns CYB, CNB, CLB (per degree unless the page says PER RADIAN), compared number by
 //! number with `datcom::report::compare::agrees`. Ours from `methods::body::body_alone` and
@@ -15,8 +15,9 @@ use datcom::case::{Case, Deck, SectionReynolds};
 use datcom::charts;
 use datcom::geometry::body;
 use datcom::methods::body::{body_alone, subsonic_limit};
-use datcom::methods::lateral::{body_lateral, figures, wing_lateral, Lateral};
+use datcom::methods::lateral::{body_lateral, figures, wing_body_lateral, wing_lateral, Lateral};
 use datcom::methods::wing::wing_alone;
+use datcom::methods::wing_body::wing_body;
 use datcom::report::compare::agrees;
 use datcom::report::legacy::{self, ListedCondition};
 
@@ -29,11 +30,13 @@ const MACH_PRINTED: f64 = 0.0005;
 /// docs/lateral.md explains each miss).
 const FLOORS_BODY: [usize; 3] = [99, 99, 104];
 const FLOORS_WING: [usize; 3] = [120, 146, 150];
+const FLOORS_WING_BODY: [usize; 3] = [472, 472, 386];
 
 #[derive(Clone, Copy, PartialEq)]
 enum Config {
     Body,
     Wing,
+    WingBody,
 }
 
 impl Config {
@@ -41,6 +44,7 @@ impl Config {
         match self {
             Config::Body => "BODY ALONE CONFIGURATION",
             Config::Wing => "WING ALONE CONFIGURATION",
+            Config::WingBody => "WING-BODY CONFIGURATION",
         }
     }
 }
@@ -77,6 +81,11 @@ fn ours(case: &Case, k: usize, config: Config) -> Result<Lateral, String> {
         Config::Wing => {
             let w = wing_alone(case, k, alpha).map_err(|e| e.to_string())?;
             wing_lateral(case, k, alpha, &w).map_err(|e| e.to_string())
+        }
+        Config::WingBody => {
+            let w = wing_alone(case, k, alpha).map_err(|e| e.to_string())?;
+            let wb = wing_body(case, k, alpha).map_err(|e| e.to_string())?;
+            wing_body_lateral(case, k, alpha, &w, &wb).map_err(|e| e.to_string())
         }
     }
 }
@@ -149,7 +158,9 @@ fn oracle_decks() -> Option<Vec<(String, String, String)>> {
             continue;
         }
         let text = common::text(&listing);
-        if !text.contains("BODY ALONE CONFIGURATION") && !text.contains("WING ALONE CONFIGURATION")
+        if !["BODY ALONE", "WING ALONE", "WING-BODY"]
+            .iter()
+            .any(|p| text.contains(&format!("{p} CONFIGURATION")))
         {
             continue;
         }
@@ -222,7 +233,11 @@ fn lateral_derivatives_agree_with_the_original() {
                 )
             })
             .collect();
-        for (config, floors) in [(Config::Body, FLOORS_BODY), (Config::Wing, FLOORS_WING)] {
+        for (config, floors) in [
+            (Config::Body, FLOORS_BODY),
+            (Config::Wing, FLOORS_WING),
+            (Config::WingBody, FLOORS_WING_BODY),
+        ] {
             let t = run(&decks, config);
             eprintln!("{title}: {}", config.page());
             for (j, c) in COLUMNS.iter().enumerate() {
@@ -251,5 +266,40 @@ fn lateral_derivatives_agree_with_the_original() {
 fn lateral_charts_are_embedded() {
     for id in figures::ALL {
         assert!(charts::get(id).is_some(), "chart {id}");
+    }
+}
+
+/// The bundled UAV with BUILD: its `WING-BODY CONFIGURATION` entries carry the wing-body
+/// sideslip derivatives, the same numbers the method gives (CYβ and Cnβ on the first row only,
+/// as the original prints them; Clβ on every row).
+#[test]
+fn a_build_run_reports_wing_body_sideslip_derivatives() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let text = common::text(&path).replace("DAMP\n", "DAMP\nBUILD\n");
+    let deck = datcom::read_deck(&text, "example-uav.dcm");
+    let case = &deck.cases[0];
+    assert!(case.cards.build, "the BUILD card was read");
+    let results = datcom::results::run_case(case);
+    let entries: Vec<_> = results
+        .conditions
+        .iter()
+        .filter(|c| c.configuration == datcom::results::WING_BODY)
+        .collect();
+    assert_eq!(
+        entries.len(),
+        case.conditions.len(),
+        "one wing-body entry per condition"
+    );
+    for (k, entry) in entries.iter().enumerate() {
+        let s = &entry.static_coefficients;
+        let direct = ours(case, k, Config::WingBody).expect("the method runs on the UAV");
+        assert!(
+            s.cyb[0].is_some() && s.cnb[0].is_some(),
+            "CYB and CNB on the first row"
+        );
+        assert!(s.clb.iter().all(Option::is_some), "CLB on every row");
+        assert_eq!(s.cyb, direct.cyb);
+        assert_eq!(s.cnb, direct.cnb);
+        assert_eq!(s.clb, direct.clb);
     }
 }

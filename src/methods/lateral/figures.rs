@@ -17,6 +17,15 @@ pub const DIHEDRAL_COMPRESSIBILITY: &str = "5.1.2.1-30a";
 /// 5.1.2.1-30b: ΔClβ/(θ tan Λc/4), per deg² (taper, A).
 pub const TWIST_ROLL: &str = "5.1.2.1-30b";
 
+/// 5.2.2.1-26: fuselage correction K_f of the sweep term (A/cos Λc/2, l_f/b).
+pub const FUSELAGE_CORRECTION: &str = "5.2.2.1-26";
+/// 5.2.3.1-8, first construction step (l_B²/S_Bs, x_m/l_B).
+pub const KN_STEP_A: &str = "5.2.3.1-8a";
+/// 5.2.3.1-8, second construction step (√(h1/h2), step a).
+pub const KN_STEP_B: &str = "5.2.3.1-8b";
+/// 5.2.3.1-8: K_N, per degree (h/w, step b).
+pub const KN: &str = "5.2.3.1-8c";
+
 /// Every chart the lateral methods read.
 pub const ALL: &[&str] = &[
     SWEEP_ROLL_PER_LIFT,
@@ -25,6 +34,10 @@ pub const ALL: &[&str] = &[
     DIHEDRAL_ROLL,
     DIHEDRAL_COMPRESSIBILITY,
     TWIST_ROLL,
+    FUSELAGE_CORRECTION,
+    KN_STEP_A,
+    KN_STEP_B,
+    KN,
 ];
 
 /// The chart's value at `args`; leaving its data is a warning.

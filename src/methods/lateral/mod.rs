@@ -9,7 +9,11 @@
 //!   and compressibility; CYβ and Cnβ from the wing's lift (the original's wing terms of
 //!   SUBLAT with the Mach-0 lift of CLMCH0); module `wing`.
 //!
-//! Not covered: wing-body, tail and total configurations (5.2.2.1, 5.2.3.1, 5.3.1.x), Mach
+//! - wing-body, DATCOM 5.2.2.1 (CYβ, Clβ) and 5.2.3.1 (Cnβ) (SUBLAT, wing-body terms): the
+//!   body's side force with the wing-height factor, the body's yawing moment with K_N, and the
+//!   wing's Clβ terms with K_f, wing height and body diameter; module `wing_body`.
+//!
+//! Not covered: tail and total configurations (5.3.1.x), Mach
 //! numbers above STMACH, non-uniform dihedral (figure 5.1.2.1-31), low-aspect-ratio wing-body
 //! pages ($LARWB).
 //!
@@ -23,6 +27,7 @@
 mod body;
 pub mod figures;
 mod wing;
+mod wing_body;
 
 use std::fmt;
 
@@ -33,6 +38,7 @@ use crate::methods::wing::WingMethodError;
 
 pub use body::body_lateral;
 pub use wing::{wing_lateral, RollingMomentTerms, WingLateralTerms};
+pub use wing_body::{wing_body_lateral, WingBodyLateralTerms};
 
 /// Why the lateral derivatives cannot be computed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error, Serialize)]
@@ -68,6 +74,9 @@ pub enum LateralWarning {
     NoMachZeroLift { reason: String },
     /// Non-uniform dihedral (SSPNDD given): figure 5.1.2.1-31 is not covered, no Clβ.
     NonUniformDihedral,
+    /// The exposed semispan equals the semispan (no body width at the wing root): the wing
+    /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
+    NoBodyWidthAtWing,
 }
 
 impl fmt::Display for LateralWarning {
@@ -81,6 +90,10 @@ impl fmt::Display for LateralWarning {
             LateralWarning::NoMachZeroLift { reason } => {
                 write!(f, "no wing lift at Mach 0, so no wing CYB: {reason}")
             }
+            LateralWarning::NoBodyWidthAtWing => write!(
+                f,
+                "SSPNE equals SSPN (no body width at the wing root): no wing-body CYB"
+            ),
             LateralWarning::NonUniformDihedral => write!(
                 f,
                 "non-uniform dihedral (SSPNDD): figure 5.1.2.1-31 is not covered, no wing CLB"
@@ -102,6 +115,8 @@ pub struct Lateral {
     pub clb: Vec<Option<f64>>,
     /// The wing method's named terms (none for the body).
     pub wing_terms: Option<WingLateralTerms>,
+    /// The wing-body method's named terms (wing-body page only).
+    pub wing_body_terms: Option<WingBodyLateralTerms>,
     pub warnings: Vec<LateralWarning>,
 }
 

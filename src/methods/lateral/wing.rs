@@ -16,7 +16,7 @@ use crate::methods::wing::{
 use crate::results::planform_area_and_mac;
 
 /// Degrees per radian: the charts and the original's equations are per degree.
-const DEG_PER_RAD: f64 = 180.0 / PI;
+pub(super) const DEG_PER_RAD: f64 = 180.0 / PI;
 /// Below this theoretical aspect ratio Clβ takes the low-aspect-ratio form (5.1.2.1, A < 1).
 const LOW_ASPECT_RATIO: f64 = 1.0;
 /// Side force per degree of effective dihedral per degree of sideslip (the original's
@@ -244,6 +244,7 @@ pub fn wing_lateral(
         cyb,
         cnb,
         clb,
+        wing_body_terms: None,
         wing_terms: Some(WingLateralTerms {
             aspect_ratio,
             taper,
