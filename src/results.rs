@@ -167,6 +167,29 @@ pub fn planform_area_and_mac(p: &Planform) -> Option<(f64, f64)> {
 /// The original's configuration line for the body alone.
 pub const BODY_ALONE: &str = "DATCOM BODY ALONE CONFIGURATION";
 
+/// Puts a configuration's sideslip derivatives into its coefficients, or the reason there are
+/// none into its warnings, labelled with the configuration (`wing-body, sideslip: ...`).
+fn add_sideslip(
+    s: &mut StaticCoefficients,
+    warnings: &mut Vec<String>,
+    label: &str,
+    lateral: Result<crate::methods::lateral::Lateral, String>,
+) {
+    match lateral {
+        Ok(lat) => {
+            warnings.extend(
+                lat.warnings
+                    .iter()
+                    .map(|x| format!("{label}, sideslip: {x}")),
+            );
+            s.cyb = lat.cyb;
+            s.cnb = lat.cnb;
+            s.clb = lat.clb;
+        }
+        Err(e) => warnings.push(format!("{label}, sideslip: {e}")),
+    }
+}
+
 /// The body-alone coefficients at one condition (DATCOM 4.2), or the reason there are none.
 fn body_alone_coefficients(
     case: &Case,
@@ -185,15 +208,8 @@ fn body_alone_coefficients(
     let n = alpha_deg.len();
     let mut s = StaticCoefficients::empty(n);
     // Sideslip derivatives of the body alone (DATCOM 5.2.1.1 as the original forms them).
-    let lat = crate::methods::lateral::body_lateral(&b, case);
-    warnings.extend(
-        lat.warnings
-            .iter()
-            .map(|w| format!("body alone, sideslip: {w}")),
-    );
-    s.cyb = lat.cyb;
-    s.cnb = lat.cnb;
-    s.clb = lat.clb;
+    let lateral = crate::methods::lateral::body_lateral(&b, case);
+    add_sideslip(&mut s, &mut warnings, "body alone", Ok(lateral));
     s.cd = b.cd;
     s.cl = b.cl;
     s.cm = b.cm;
@@ -223,19 +239,9 @@ fn wing_alone_coefficients(
         .collect();
     let mut s = StaticCoefficients::empty(alpha_deg.len());
     // Sideslip derivatives of the wing alone (DATCOM 5.1.2.1).
-    match crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w) {
-        Ok(lat) => {
-            warnings.extend(
-                lat.warnings
-                    .iter()
-                    .map(|x| format!("wing alone, sideslip: {x}")),
-            );
-            s.cyb = lat.cyb;
-            s.cnb = lat.cnb;
-            s.clb = lat.clb;
-        }
-        Err(e) => warnings.push(format!("wing alone, sideslip: {e}")),
-    }
+    let lateral = crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w)
+        .map_err(|e| e.to_string());
+    add_sideslip(&mut s, &mut warnings, "wing alone", lateral);
     s.cd = w.cd;
     s.cl = w.cl;
     s.cm = w.cm;
@@ -321,19 +327,7 @@ fn wing_body_coefficients(
                 )
                 .map_err(|e| e.to_string())
             });
-    match lateral {
-        Ok(lat) => {
-            warnings.extend(
-                lat.warnings
-                    .iter()
-                    .map(|x| format!("wing-body, sideslip: {x}")),
-            );
-            s.cyb = lat.cyb;
-            s.cnb = lat.cnb;
-            s.clb = lat.clb;
-        }
-        Err(e) => warnings.push(format!("wing-body, sideslip: {e}")),
-    }
+    add_sideslip(&mut s, &mut warnings, "wing-body", lateral);
     s.cd = w.cd;
     s.cl = w.cl;
     s.cm = w.cm;

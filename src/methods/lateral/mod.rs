@@ -33,8 +33,10 @@ use std::fmt;
 
 use serde::Serialize;
 
+use crate::case::Case;
 use crate::charts::ChartWarning;
 use crate::methods::wing::WingMethodError;
+use crate::results::planform_area_and_mac;
 
 pub use body::body_lateral;
 pub use wing::{wing_lateral, RollingMomentTerms, WingLateralTerms};
@@ -131,4 +133,62 @@ impl From<WingMethodError> for LateralError {
 /// A finite value, else none.
 fn finite(v: f64) -> Option<f64> {
     v.is_finite().then_some(v)
+}
+
+/// The checked wing inputs every wing method here starts from (SI lengths): the flight
+/// condition, the semispan SSPN, root and tip chords, exposed semispan SSPNE and the
+/// theoretical area.
+pub(crate) struct WingInputs<'a> {
+    pub plan: &'a crate::case::Planform,
+    pub condition: &'a crate::conditions::FlightCondition,
+    pub semispan: f64,
+    pub root: f64,
+    pub tip: f64,
+    pub exposed_semispan: f64,
+    pub area: f64,
+}
+
+/// Reads and checks the wing inputs for flight condition `condition_index`, with `rows` the
+/// number of rows of the lift results the derivatives are built on, which must match the
+/// `angles` of the schedule.
+pub(crate) fn wing_inputs(
+    case: &Case,
+    condition_index: usize,
+    angles: usize,
+    rows: usize,
+) -> Result<WingInputs<'_>, LateralError> {
+    let plan = case.wing.as_ref().ok_or(LateralError::NoWing)?;
+    let condition = case
+        .conditions
+        .get(condition_index)
+        .ok_or(LateralError::NoCondition {
+            index: condition_index,
+        })?;
+    if rows != angles {
+        return Err(LateralError::AngleCount {
+            expected: angles,
+            found: rows,
+        });
+    }
+    let missing = |what: &str| LateralError::Geometry {
+        reason: format!("{what} is not given"),
+    };
+    let semispan = plan.sspn.ok_or_else(|| missing("SSPN"))?;
+    let root = plan.chrdr.ok_or_else(|| missing("CHRDR"))?;
+    let exposed_semispan = plan.sspne.unwrap_or(semispan);
+    let (area, _) = planform_area_and_mac(plan).ok_or_else(|| missing("the planform"))?;
+    if !(semispan > 0.0 && root > 0.0 && area > 0.0 && exposed_semispan > 0.0) {
+        return Err(LateralError::Geometry {
+            reason: "SSPN, SSPNE, CHRDR and the area must be positive".into(),
+        });
+    }
+    Ok(WingInputs {
+        plan,
+        condition,
+        semispan,
+        root,
+        tip: plan.chrdtp.unwrap_or(0.0),
+        exposed_semispan,
+        area,
+    })
 }

@@ -6,14 +6,13 @@ use serde::Serialize;
 
 use super::body::lateral_reference_span;
 use super::figures::{self, read};
-use super::{finite, Lateral, LateralError, LateralWarning};
+use super::{finite, wing_inputs, Lateral, LateralError, LateralWarning, WingInputs};
 use crate::case::units::from_si;
 use crate::case::Case;
 use crate::deck::schema::Dimension;
 use crate::methods::wing::{
     computed_wing_section, wing_alone_with_section, WingAlone, WingPlanform, WingType,
 };
-use crate::results::planform_area_and_mac;
 
 /// Degrees per radian: the charts and the original's equations are per degree.
 pub(super) const DEG_PER_RAD: f64 = 180.0 / PI;
@@ -126,33 +125,16 @@ pub fn wing_lateral(
     alpha_deg: &[f64],
     wing: &WingAlone,
 ) -> Result<Lateral, LateralError> {
-    let plan = case.wing.as_ref().ok_or(LateralError::NoWing)?;
-    let condition = case
-        .conditions
-        .get(condition_index)
-        .ok_or(LateralError::NoCondition {
-            index: condition_index,
-        })?;
+    let WingInputs {
+        plan,
+        condition,
+        semispan,
+        root,
+        tip,
+        exposed_semispan,
+        area,
+    } = wing_inputs(case, condition_index, alpha_deg.len(), wing.cl.len())?;
     let n = alpha_deg.len();
-    if wing.cl.len() != n {
-        return Err(LateralError::AngleCount {
-            expected: n,
-            found: wing.cl.len(),
-        });
-    }
-    let missing = |what: &str| LateralError::Geometry {
-        reason: format!("{what} is not given"),
-    };
-    let semispan = plan.sspn.ok_or_else(|| missing("SSPN"))?;
-    let root = plan.chrdr.ok_or_else(|| missing("CHRDR"))?;
-    let tip = plan.chrdtp.unwrap_or(0.0);
-    let exposed_semispan = plan.sspne.unwrap_or(semispan);
-    let (area, _) = planform_area_and_mac(plan).ok_or_else(|| missing("the planform"))?;
-    if !(semispan > 0.0 && root > 0.0 && area > 0.0 && exposed_semispan > 0.0) {
-        return Err(LateralError::Geometry {
-            reason: "SSPN, SSPNE, CHRDR and the area must be positive".into(),
-        });
-    }
     let mut warnings = Vec::new();
     let p: &WingPlanform = &wing.terms.planform;
     let span = 2.0 * semispan;

@@ -7,13 +7,12 @@ use serde::Serialize;
 use super::body::lateral_reference_span;
 use super::figures::{self, read};
 use super::wing::DEG_PER_RAD;
-use super::{finite, Lateral, LateralError, LateralWarning};
+use super::{finite, wing_inputs, Lateral, LateralError, LateralWarning, WingInputs};
 use crate::case::Case;
 use crate::geometry::body::body as body_geometry;
 use crate::methods::wing::{WingAlone, WingType};
 use crate::methods::wing_body::WingBody;
 use crate::numeric::trapezoid;
-use crate::results::planform_area_and_mac;
 
 /// Side-force factor of the wing height, wing above the body axis (z_w/(d/2) ≥ 0), per unit
 /// z_w/(d/2) (DATCOM figure 5.2.1.1-7 as the original codes it).
@@ -139,34 +138,17 @@ pub fn wing_body_lateral(
     wing: &WingAlone,
     wing_body: &WingBody,
 ) -> Result<Lateral, LateralError> {
-    let plan = case.wing.as_ref().ok_or(LateralError::NoWing)?;
-    let condition = case
-        .conditions
-        .get(condition_index)
-        .ok_or(LateralError::NoCondition {
-            index: condition_index,
-        })?;
+    let WingInputs {
+        plan,
+        condition,
+        semispan,
+        root,
+        tip,
+        exposed_semispan,
+        area,
+    } = wing_inputs(case, condition_index, alpha_deg.len(), wing_body.cl.len())?;
     let n = alpha_deg.len();
-    if wing_body.cl.len() != n {
-        return Err(LateralError::AngleCount {
-            expected: n,
-            found: wing_body.cl.len(),
-        });
-    }
-    let missing = |what: &str| LateralError::Geometry {
-        reason: format!("{what} is not given"),
-    };
-    let semispan = plan.sspn.ok_or_else(|| missing("SSPN"))?;
-    let root = plan.chrdr.ok_or_else(|| missing("CHRDR"))?;
-    let tip = plan.chrdtp.unwrap_or(0.0);
-    let exposed_semispan = plan.sspne.unwrap_or(semispan);
     let outboard_span = plan.sspnop.unwrap_or(0.0);
-    let (area, _) = planform_area_and_mac(plan).ok_or_else(|| missing("the planform"))?;
-    if !(semispan > 0.0 && root > 0.0 && area > 0.0 && exposed_semispan > 0.0) {
-        return Err(LateralError::Geometry {
-            reason: "SSPN, SSPNE, CHRDR and the area must be positive".into(),
-        });
-    }
     let mut warnings = Vec::new();
     let b_ref = lateral_reference_span(case);
     if b_ref.is_none() {
