@@ -924,3 +924,34 @@ fn reynolds_number_is_the_same_in_every_unit_system() {
         "{ft} {inch} {metre} {cm}"
     );
 }
+
+/// `section_characteristics` remembers its last results per thread: asking again, in any
+/// order and for more sections than it keeps, gives exactly what the method computes afresh,
+/// and a changed input (here one Mach number) is not answered from memory.
+#[test]
+fn remembered_sections_equal_fresh_ones() {
+    let shapes: Vec<SectionShape> = [0.06, 0.09, 0.12, 0.15, 0.18, 0.21]
+        .iter()
+        .map(|&t| four_digit(0.02, 0.4, t, 41))
+        .collect();
+    let conditions = |mach: f64| {
+        vec![SectionCondition {
+            mach,
+            reynolds_number: Some(1.0e6),
+        }]
+    };
+    let none = SectionOverrides::default();
+    let fresh = |shape: &SectionShape, mach: f64| {
+        section_characteristics_with(shape, &conditions(mach), &none, &SectionOptions::default())
+    };
+    for order in [[0, 1, 2, 3, 4, 5], [5, 0, 5, 1, 0, 3]] {
+        for i in order {
+            let remembered = section_characteristics(&shapes[i], &conditions(0.2), &none);
+            assert_eq!(remembered, fresh(&shapes[i], 0.2), "section {i}");
+        }
+    }
+    let at_02 = section_characteristics(&shapes[0], &conditions(0.2), &none).unwrap();
+    let at_05 = section_characteristics(&shapes[0], &conditions(0.5), &none).unwrap();
+    assert_ne!(at_02.per_mach[0].mach, at_05.per_mach[0].mach);
+    assert_eq!(Ok(at_05), fresh(&shapes[0], 0.5));
+}

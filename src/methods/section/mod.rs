@@ -104,12 +104,76 @@ impl Default for SectionOptions {
 
 /// The section characteristics with the default options. See
 /// [`section_characteristics_with`].
+///
+/// The method is a pure function of its inputs and the costliest step of a run (the Weber
+/// integration at every condition), while the build-up asks for the same section from several
+/// methods (wing, wing lateral, tails) at each flight condition. So the last few results are
+/// remembered per thread, keyed by the whole input compared exactly; a changed input (or a NaN
+/// in it, which never compares equal) is computed afresh.
 pub fn section_characteristics(
     shape: &SectionShape,
     conditions: &[SectionCondition],
     user: &SectionOverrides,
 ) -> Result<SectionCharacteristics, CharacteristicsError> {
-    section_characteristics_with(shape, conditions, user, &SectionOptions::default())
+    memo::remembered(shape, conditions, user, || {
+        section_characteristics_with(shape, conditions, user, &SectionOptions::default())
+    })
+}
+
+mod memo {
+    use std::cell::RefCell;
+
+    use super::{
+        CharacteristicsError, SectionCharacteristics, SectionCondition, SectionOverrides,
+        SectionShape,
+    };
+
+    /// How many distinct sections a thread remembers: a case has at most four (wing,
+    /// horizontal tail, vertical tail, ventral fin).
+    const REMEMBERED: usize = 4;
+
+    type Output = Result<SectionCharacteristics, CharacteristicsError>;
+    type Entry = (
+        SectionShape,
+        Vec<SectionCondition>,
+        SectionOverrides,
+        Output,
+    );
+
+    thread_local! {
+        static LAST: RefCell<Vec<Entry>> = const { RefCell::new(Vec::new()) };
+    }
+
+    pub(super) fn remembered(
+        shape: &SectionShape,
+        conditions: &[SectionCondition],
+        user: &SectionOverrides,
+        compute: impl FnOnce() -> Output,
+    ) -> Output {
+        let hit = LAST.with(|last| {
+            last.borrow()
+                .iter()
+                .find(|(s, c, u, _)| s == shape && c.as_slice() == conditions && u == user)
+                .map(|(_, _, _, out)| out.clone())
+        });
+        if let Some(out) = hit {
+            return out;
+        }
+        let out = compute();
+        LAST.with(|last| {
+            let mut last = last.borrow_mut();
+            if last.len() == REMEMBERED {
+                let _evicted = last.remove(0);
+            }
+            last.push((
+                shape.clone(),
+                conditions.to_vec(),
+                user.clone(),
+                out.clone(),
+            ));
+        });
+        out
+    }
 }
 
 /// Slope over one degree converted to per radian.
