@@ -11,7 +11,7 @@ use crate::case::units::from_si;
 use crate::case::Case;
 use crate::deck::schema::Dimension;
 use crate::methods::wing::{
-    computed_wing_section, wing_alone_with_section, WingAlone, WingPlanform, WingType,
+    computed_wing_section, wing_alone_with_section, Sweep, WingAlone, WingPlanform, WingType,
 };
 
 /// Degrees per radian: the charts and the original's equations are per degree.
@@ -76,6 +76,91 @@ fn panel_roll_per_cl(
     if aspect_ratio < LOW_ASPECT_RATIO {
         return Ok(-2.0 / (3.0 * DEG_PER_RAD * aspect_ratio));
     }
+    let (sweep, aspect) = panel_sweep_and_aspect_roll(
+        aspect_ratio,
+        taper,
+        half_chord_sweep_deg,
+        cos_half_chord,
+        mach,
+        warnings,
+    )?;
+    Ok(sweep + aspect)
+}
+
+/// The chart values of a straight wing's Clβ, as [`straight_roll_charts`] reads them (the
+/// fields of [`RollingMomentTerms::Straight`]).
+pub(super) struct StraightRollCharts {
+    pub sweep_per_cl: f64,
+    pub sweep_compressibility: f64,
+    pub aspect_per_cl: f64,
+    pub dihedral: f64,
+    pub dihedral_compressibility: f64,
+    pub twist: f64,
+}
+
+/// The chart values of a straight wing's Clβ (DATCOM 5.1.2.1 equation b): figures
+/// 5.1.2.1-27 and -28a (sweep term and its compressibility factor, at |Λc/2|; a forward-swept
+/// half chord takes the magnitude of the chart value, as the original), -28b (aspect ratio),
+/// -29 and -30a (dihedral and its compressibility factor), -30b (twist).
+pub(super) fn straight_roll_charts(
+    taper: f64,
+    aspect_ratio: f64,
+    half_chord: Sweep,
+    mach: f64,
+    warnings: &mut Vec<LateralWarning>,
+) -> Result<StraightRollCharts, LateralError> {
+    let x_aspect = aspect_ratio / half_chord.cos;
+    let x_mach = mach * half_chord.cos;
+    let mut sweep_per_cl = read(
+        figures::SWEEP_ROLL_PER_LIFT,
+        &[taper, aspect_ratio, half_chord.deg.abs()],
+        warnings,
+    )?;
+    if half_chord.deg < 0.0 {
+        sweep_per_cl = sweep_per_cl.abs();
+    }
+    let sweep_compressibility = read(
+        figures::SWEEP_COMPRESSIBILITY,
+        &[x_aspect, x_mach],
+        warnings,
+    )?;
+    let aspect_per_cl = read(
+        figures::ASPECT_ROLL_PER_LIFT,
+        &[taper, aspect_ratio],
+        warnings,
+    )?;
+    let twist = read(figures::TWIST_ROLL, &[taper, aspect_ratio], warnings)?;
+    let dihedral_compressibility = read(
+        figures::DIHEDRAL_COMPRESSIBILITY,
+        &[x_aspect, x_mach],
+        warnings,
+    )?;
+    let dihedral = read(
+        figures::DIHEDRAL_ROLL,
+        &[taper, half_chord.deg.abs(), aspect_ratio],
+        warnings,
+    )?;
+    Ok(StraightRollCharts {
+        sweep_per_cl,
+        sweep_compressibility,
+        aspect_per_cl,
+        dihedral,
+        dihedral_compressibility,
+        twist,
+    })
+}
+
+/// The two chart terms of one trapezoidal panel, per degree: the sweep term with its
+/// compressibility factor, (Clβ/CL)_Λ·K_MΛ (figures 5.1.2.1-27, -28a, at |Λc/2|), and the
+/// aspect-ratio term (Clβ/CL)_A (figure 5.1.2.1-28b).
+pub(super) fn panel_sweep_and_aspect_roll(
+    aspect_ratio: f64,
+    taper: f64,
+    half_chord_sweep_deg: f64,
+    cos_half_chord: f64,
+    mach: f64,
+    warnings: &mut Vec<LateralWarning>,
+) -> Result<(f64, f64), LateralError> {
     let sweep = read(
         figures::SWEEP_ROLL_PER_LIFT,
         &[taper, aspect_ratio, half_chord_sweep_deg.abs()],
@@ -91,7 +176,7 @@ fn panel_roll_per_cl(
         &[taper, aspect_ratio],
         warnings,
     )?;
-    Ok(sweep * km + aspect)
+    Ok((sweep * km, aspect))
 }
 
 /// The wing-alone CYβ, Cnβ and Clβ at subsonic speed for flight condition `condition_index`
@@ -286,35 +371,14 @@ fn rolling_moment(
             warnings.push(LateralWarning::NonUniformDihedral);
             return Ok((vec![None; n], None));
         }
-        let half = p.inboard.half_chord;
-        let x_aspect = a / half.cos;
-        let x_mach = r.mach * half.cos;
-        let mut sweep_per_cl = read(
-            figures::SWEEP_ROLL_PER_LIFT,
-            &[r.taper, a, half.deg.abs()],
-            warnings,
-        )?;
-        // The original takes the magnitude of the chart value for a forward-swept half chord.
-        if half.deg < 0.0 {
-            sweep_per_cl = sweep_per_cl.abs();
-        }
-        let sweep_compressibility = read(
-            figures::SWEEP_COMPRESSIBILITY,
-            &[x_aspect, x_mach],
-            warnings,
-        )?;
-        let aspect_per_cl = read(figures::ASPECT_ROLL_PER_LIFT, &[r.taper, a], warnings)?;
-        let twist = read(figures::TWIST_ROLL, &[r.taper, a], warnings)?;
-        let dihedral_compressibility = read(
-            figures::DIHEDRAL_COMPRESSIBILITY,
-            &[x_aspect, x_mach],
-            warnings,
-        )?;
-        let dihedral = read(
-            figures::DIHEDRAL_ROLL,
-            &[r.taper, half.deg.abs(), a],
-            warnings,
-        )?;
+        let StraightRollCharts {
+            sweep_per_cl,
+            sweep_compressibility,
+            aspect_per_cl,
+            dihedral,
+            dihedral_compressibility,
+            twist,
+        } = straight_roll_charts(r.taper, a, p.inboard.half_chord, r.mach, warnings)?;
         let tan_quarter_in = 0.5 * (p.inboard.leading_edge.tan + p.inboard.half_chord.tan);
         let twist_term = plan.twista_deg.unwrap_or(0.0) * tan_quarter_in * twist;
         let dihedral_term = r.dihedral_in * dihedral * dihedral_compressibility;

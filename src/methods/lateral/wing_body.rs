@@ -6,7 +6,9 @@ use serde::Serialize;
 
 use super::body::lateral_reference_span;
 use super::figures::{self, read};
-use super::wing::DEG_PER_RAD;
+use super::wing::{
+    panel_sweep_and_aspect_roll, straight_roll_charts, StraightRollCharts, DEG_PER_RAD,
+};
 use super::{finite, wing_inputs, Lateral, LateralError, LateralWarning, WingInputs};
 use crate::case::Case;
 use crate::geometry::body::body as body_geometry;
@@ -352,40 +354,21 @@ fn roll_parts(
             warnings.push(LateralWarning::NonUniformDihedral);
             return Ok(None);
         }
-        let taper = tip / root;
-        let half = p.inboard.half_chord;
-        let mut sweep = read(
-            figures::SWEEP_ROLL_PER_LIFT,
-            &[taper, a, half.deg.abs()],
-            warnings,
-        )?;
-        if half.deg < 0.0 {
-            sweep = sweep.abs();
-        }
-        let km = read(
-            figures::SWEEP_COMPRESSIBILITY,
-            &[a / half.cos, mach * half.cos],
-            warnings,
-        )?;
-        let aspect = read(figures::ASPECT_ROLL_PER_LIFT, &[taper, a], warnings)?;
-        let twist_chart = read(figures::TWIST_ROLL, &[taper, a], warnings)?;
-        let kg = read(
-            figures::DIHEDRAL_COMPRESSIBILITY,
-            &[a / half.cos, mach * half.cos],
-            warnings,
-        )?;
-        let dihedral_chart = read(
-            figures::DIHEDRAL_ROLL,
-            &[taper, half.deg.abs(), a],
-            warnings,
-        )?;
+        let StraightRollCharts {
+            sweep_per_cl,
+            sweep_compressibility,
+            aspect_per_cl,
+            dihedral,
+            dihedral_compressibility,
+            twist,
+        } = straight_roll_charts(tip / root, a, p.inboard.half_chord, mach, warnings)?;
         let tan_quarter_in = 0.5 * (p.inboard.leading_edge.tan + p.inboard.half_chord.tan);
         return Ok(Some(RollParts {
             straight: true,
-            sweep: sweep * km,
-            aspect,
-            dihedral: plan.dhdadi_deg.unwrap_or(0.0) * dihedral_chart * kg,
-            twist: plan.twista_deg.unwrap_or(0.0) * tan_quarter_in * twist_chart,
+            sweep: sweep_per_cl * sweep_compressibility,
+            aspect: aspect_per_cl,
+            dihedral: plan.dhdadi_deg.unwrap_or(0.0) * dihedral * dihedral_compressibility,
+            twist: plan.twista_deg.unwrap_or(0.0) * tan_quarter_in * twist,
         }));
     }
     let geometry = |what: &str| LateralError::Geometry {
@@ -399,41 +382,20 @@ fn roll_parts(
     let outboard_span = plan.sspnop.ok_or_else(|| geometry("SSPNOP"))?;
     let semispan = plan.sspn.unwrap_or(0.0);
     let inboard_aspect = 4.0 * (semispan - outboard_span) / (root + break_chord);
-    let panel = |aspect_ratio: f64,
-                 taper: f64,
-                 half_deg: f64,
-                 half_cos: f64,
-                 warnings: &mut Vec<LateralWarning>|
-     -> Result<(f64, f64), LateralError> {
-        let sweep = read(
-            figures::SWEEP_ROLL_PER_LIFT,
-            &[taper, aspect_ratio, half_deg.abs()],
-            warnings,
-        )?;
-        let km = read(
-            figures::SWEEP_COMPRESSIBILITY,
-            &[aspect_ratio / half_cos, mach * half_cos],
-            warnings,
-        )?;
-        let aspect = read(
-            figures::ASPECT_ROLL_PER_LIFT,
-            &[taper, aspect_ratio],
-            warnings,
-        )?;
-        Ok((sweep * km, aspect))
-    };
-    let (sweep_in, aspect_in) = panel(
+    let (sweep_in, aspect_in) = panel_sweep_and_aspect_roll(
         inboard_aspect,
         break_chord / root,
         p.inboard.half_chord.deg,
         p.inboard.half_chord.cos,
+        mach,
         warnings,
     )?;
-    let (sweep_out, aspect_out) = panel(
+    let (sweep_out, aspect_out) = panel_sweep_and_aspect_roll(
         extended.aspect_ratio,
         extended.taper,
         outboard.half_chord.deg,
         outboard.half_chord.cos,
+        mach,
         warnings,
     )?;
     Ok(Some(RollParts {
