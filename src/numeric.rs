@@ -53,6 +53,24 @@ pub fn curve_slopes(alpha_rad: &[f64], f: &[Option<f64>]) -> Vec<Option<f64>> {
 mod tests {
     use super::*;
 
+    /// At 0° the body axes are the wind axes; at 90° lift is axial (negative) and drag normal;
+    /// CN = 0 gives no centre of pressure; a missing CL or CD gives no CN or CA.
+    #[test]
+    fn body_axes_by_hand() {
+        let alpha = [0.0, std::f64::consts::FRAC_PI_2, 0.0, 0.0];
+        let cl = [Some(0.5), Some(0.5), Some(0.0), None];
+        let cd = [Some(0.02), Some(0.02), Some(0.0), Some(0.02)];
+        let cm = [Some(-0.1), Some(-0.1), Some(-0.1), Some(-0.1)];
+        let a = body_axes(&alpha, &cl, &cd, &cm);
+        // Only the rounding of sin, cos and the products separates these from the hand values.
+        const ROUNDING: f64 = 1e-12;
+        let close = |x: Option<f64>, y: f64| (x.unwrap() - y).abs() < ROUNDING;
+        assert!(close(a.cn[0], 0.5) && close(a.ca[0], 0.02) && close(a.xcp[0], -0.2));
+        assert!(close(a.cn[1], 0.02) && close(a.ca[1], -0.5) && close(a.xcp[1], -5.0));
+        assert_eq!(a.xcp[2], None);
+        assert_eq!((a.cn[3], a.ca[3], a.xcp[3]), (None, None, None));
+    }
+
     #[test]
     fn slopes_of_a_parabola_are_exact() {
         // f = α² has slope 2α at every node, also at the ends (one parabola fits all).
@@ -68,4 +86,55 @@ mod tests {
         assert_eq!(curve_slopes(&[0.0], &[Some(1.0)]), vec![Some(0.0)]);
         assert_eq!(trapezoid(&[0.0, 1.0, 3.0], &[1.0, 1.0, 1.0]), 3.0);
     }
+}
+
+/// Coefficients resolved into body axes at each angle of attack.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyAxes {
+    /// Normal force CN = CL cos α + CD sin α.
+    pub cn: Vec<Option<f64>>,
+    /// Axial force CA = CD cos α − CL sin α.
+    pub ca: Vec<Option<f64>>,
+    /// Centre of pressure CM/CN in reference lengths (none where CN = 0).
+    pub xcp: Vec<Option<f64>>,
+}
+
+/// CN, CA and CM/CN from CL, CD and CM at the angles `alpha_rad` (the columns every
+/// configuration page prints); a value that is not finite is none.
+pub fn body_axes(
+    alpha_rad: &[f64],
+    cl: &[Option<f64>],
+    cd: &[Option<f64>],
+    cm: &[Option<f64>],
+) -> BodyAxes {
+    let n = alpha_rad.len();
+    let mut axes = BodyAxes {
+        cn: Vec::with_capacity(n),
+        ca: Vec::with_capacity(n),
+        xcp: Vec::with_capacity(n),
+    };
+    for (k, alpha) in alpha_rad.iter().enumerate() {
+        let (s, c) = alpha.sin_cos();
+        let (lift, drag, moment) = (
+            cl.get(k).copied().flatten(),
+            cd.get(k).copied().flatten(),
+            cm.get(k).copied().flatten(),
+        );
+        let (normal, axial) = match (lift, drag) {
+            (Some(l), Some(d)) => (Some(l * c + d * s), Some(d * c - l * s)),
+            _ => (None, None),
+        };
+        axes.cn.push(normal.filter(|v| v.is_finite()));
+        axes.ca.push(axial.filter(|v| v.is_finite()));
+        axes.xcp.push(match (moment, normal) {
+            (Some(m), Some(nf)) if nf != 0.0 => Some(m / nf).filter(|v| v.is_finite()),
+            _ => None,
+        });
+    }
+    axes
+}
+
+/// The values that are finite; the others become none.
+pub fn finite_only(v: Vec<Option<f64>>) -> Vec<Option<f64>> {
+    v.into_iter().map(|x| x.filter(|y| y.is_finite())).collect()
 }

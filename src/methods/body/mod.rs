@@ -475,20 +475,9 @@ pub fn body_alone(
             }
         }
     }
-    let mut cn = Vec::with_capacity(n);
-    let mut ca = Vec::with_capacity(n);
-    let mut xcp = Vec::with_capacity(n);
-    for k in 0..n {
-        let (sin, cos) = alpha_rad[k].sin_cos();
-        let normal = cl[k] * cos + cd[k] * sin;
-        cn.push(finite(normal));
-        ca.push(finite(cd[k] * cos - cl[k] * sin));
-        xcp.push(if normal != 0.0 {
-            finite(cm[k] / normal)
-        } else {
-            None
-        });
-    }
+    let given = |v: &[f64]| -> Vec<Option<f64>> { v.iter().copied().map(Some).collect() };
+    let crate::numeric::BodyAxes { cn, ca, xcp } =
+        crate::numeric::body_axes(&alpha_rad, &given(&cl), &given(&cd), &given(&cm));
     let keep = |v: Vec<Option<f64>>| -> Vec<Option<f64>> {
         v.into_iter().map(|x| x.and_then(finite)).collect()
     };

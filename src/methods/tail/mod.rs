@@ -166,27 +166,11 @@ impl Coefficients {
         cla_per_rad: Vec<Option<f64>>,
         cma_per_rad: Vec<Option<f64>>,
     ) -> Coefficients {
-        let finite = |v: Vec<Option<f64>>| -> Vec<Option<f64>> {
-            v.into_iter().map(|x| x.filter(|y| y.is_finite())).collect()
-        };
+        let finite = crate::numeric::finite_only;
         let (cd, cl, cm) = (finite(cd), finite(cl), finite(cm));
-        let n = alpha_deg.len();
-        let mut cn = Vec::with_capacity(n);
-        let mut ca = Vec::with_capacity(n);
-        let mut xcp = Vec::with_capacity(n);
-        for k in 0..n {
-            let (s, c) = alpha_deg[k].to_radians().sin_cos();
-            let (normal, axial) = match (cl[k], cd[k]) {
-                (Some(l), Some(d)) => (Some(l * c + d * s), Some(d * c - l * s)),
-                _ => (None, None),
-            };
-            cn.push(normal.filter(|v| v.is_finite()));
-            ca.push(axial.filter(|v| v.is_finite()));
-            xcp.push(match (cm[k], normal) {
-                (Some(m), Some(nf)) if nf != 0.0 => Some(m / nf).filter(|v| v.is_finite()),
-                _ => None,
-            });
-        }
+        let alpha_rad: Vec<f64> = alpha_deg.iter().map(|a| a.to_radians()).collect();
+        let crate::numeric::BodyAxes { cn, ca, xcp } =
+            crate::numeric::body_axes(&alpha_rad, &cl, &cd, &cm);
         Coefficients {
             cd,
             cl,

@@ -577,25 +577,9 @@ pub fn wing_alone_with_section(
             });
         }
     }
-    let mut cn = Vec::with_capacity(n);
-    let mut ca = Vec::with_capacity(n);
-    let mut xcp = Vec::with_capacity(n);
-    for k in 0..n {
-        let (s, c) = alpha_rad[k].sin_cos();
-        let (normal, axial) = match (cl_page[k], cd[k]) {
-            (Some(l), Some(d)) => (Some(l * c + d * s), Some(d * c - l * s)),
-            _ => (None, None),
-        };
-        cn.push(normal.filter(|v| v.is_finite()));
-        ca.push(axial.filter(|v| v.is_finite()));
-        xcp.push(match (cm[k], normal) {
-            (Some(m), Some(nf)) if nf != 0.0 => Some(m / nf).filter(|v| v.is_finite()),
-            _ => None,
-        });
-    }
-    let finite = |v: Vec<Option<f64>>| -> Vec<Option<f64>> {
-        v.into_iter().map(|x| x.filter(|y| y.is_finite())).collect()
-    };
+    let crate::numeric::BodyAxes { cn, ca, xcp } =
+        crate::numeric::body_axes(&alpha_rad, &cl_page, &cd, &cm);
+    let finite = crate::numeric::finite_only;
     Ok(WingAlone {
         planform_type: kind,
         reference_area,

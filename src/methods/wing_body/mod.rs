@@ -350,22 +350,8 @@ pub fn wing_body_with_section(
     let cla = curve_slopes(&alpha_rad, &cl);
     let mut cma = curve_slopes(&alpha_rad[..applicable], &cm[..applicable]);
     cma.resize(n, None);
-    let mut cn = Vec::with_capacity(n);
-    let mut ca = Vec::with_capacity(n);
-    let mut xcp = Vec::with_capacity(n);
-    for k in 0..n {
-        let (s, c) = alpha_rad[k].sin_cos();
-        let (normal, axial) = match (cl[k], cd[k]) {
-            (Some(l), Some(d)) => (Some(l * c + d * s), Some(d * c - l * s)),
-            _ => (None, None),
-        };
-        cn.push(normal.filter(|v| v.is_finite()));
-        ca.push(axial.filter(|v| v.is_finite()));
-        xcp.push(match (cm[k], normal) {
-            (Some(m), Some(nf)) if nf != 0.0 => Some(m / nf).filter(|v| v.is_finite()),
-            _ => None,
-        });
-    }
+    let crate::numeric::BodyAxes { cn, ca, xcp } =
+        crate::numeric::body_axes(&alpha_rad, &cl, &cd, &cm);
     let auxiliary = Auxiliary {
         body_in_presence_of_wing_slope_per_rad: factors.body_in_presence_of_wing * slope,
         wing_in_presence_of_body_slope_per_rad: factors.wing_in_presence_of_body * slope,
