@@ -69,21 +69,6 @@ impl Tally {
     }
 }
 
-/// The listing of each case: the text from one `LIST OF ALL INPUT CARDS` line to the next.
-fn case_listings(text: &str) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
-    for line in text.lines() {
-        if line.contains("LIST OF ALL INPUT CARDS FOR THIS CASE") {
-            out.push(String::new());
-        }
-        if let Some(last) = out.last_mut() {
-            last.push_str(line);
-            last.push('\n');
-        }
-    }
-    out
-}
-
 fn is_subsonic(case: &Case, c: &FlightCondition) -> bool {
     c.mach <= subsonic_limit(case)
 }
@@ -195,27 +180,6 @@ fn property_rows(listing: &str) -> Vec<(f64, Vec<String>, usize)> {
     out
 }
 
-fn oracle_decks() -> Option<Vec<(String, Deck, String)>> {
-    let dir = common::shared_dir("oracle/cases", "body_alone oracle")?;
-    let mut out = Vec::new();
-    let mut dirs: Vec<_> = std::fs::read_dir(&dir)
-        .ok()?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir())
-        .collect();
-    dirs.sort();
-    for d in dirs {
-        let (deck, listing) = (d.join("input.dcm"), d.join("for006.dat"));
-        if !deck.is_file() || !listing.is_file() {
-            continue;
-        }
-        let name = d.file_name().unwrap().to_string_lossy().into_owned();
-        let deck = datcom::read_deck(&common::text(&deck), &name);
-        out.push((name, deck, common::text(&listing)));
-    }
-    Some(out)
-}
-
 /// Slopes the original computes across an angle the deck leaves unset (NALPHA larger than the
 /// number of ALSCHD values, e.g. lkampoli ex1): the original runs a row at the unset angle,
 /// printed NDM, and its slopes CLA and CMA are read across that row; we compute the angles
@@ -239,7 +203,7 @@ fn has_unset_angle(listing: &str, line: usize) -> bool {
 
 /// Compares every subsonic body-alone table of one deck's listing; returns (tables, rows).
 fn compare_listing(name: &str, deck: &Deck, text: &str, tally: &mut Tally) -> (usize, usize) {
-    let listings = case_listings(text);
+    let listings = common::case_listings(text);
     // The listing ends with an empty card list before END OF JOB.
     if listings.len() < deck.cases.len() {
         eprintln!(
@@ -305,7 +269,9 @@ fn report(title: &str, tables: usize, rows: usize, tally: &Tally) -> usize {
 
 #[test]
 fn body_alone_tables_agree_with_the_original() {
-    let Some(decks) = oracle_decks() else { return };
+    let Some(decks) = common::oracle_decks("body_alone oracle", &[]) else {
+        return;
+    };
     let mut tally = Tally::new(COLUMNS.len());
     let (mut tables, mut rows) = (0, 0);
     for (name, deck, text) in &decks {
@@ -380,11 +346,13 @@ fn body_alone_tables_agree_with_more_listings_when_given() {
 
 #[test]
 fn basic_body_properties_drag_agrees_with_the_original() {
-    let Some(decks) = oracle_decks() else { return };
+    let Some(decks) = common::oracle_decks("body_alone oracle", &[]) else {
+        return;
+    };
     let mut tally = Tally::new(PROPERTY_COLUMNS.len());
     let mut rows = 0;
     for (name, deck, text) in &decks {
-        let listings = case_listings(text);
+        let listings = common::case_listings(text);
         if listings.len() < deck.cases.len() {
             continue;
         }

@@ -55,20 +55,6 @@ struct Tally {
     misses: Vec<String>,
 }
 
-fn case_listings(text: &str) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
-    for line in text.lines() {
-        if line.contains("LIST OF ALL INPUT CARDS FOR THIS CASE") {
-            out.push(String::new());
-        }
-        if let Some(last) = out.last_mut() {
-            last.push_str(line);
-            last.push('\n');
-        }
-    }
-    out
-}
-
 fn ours(case: &Case, k: usize, config: Config) -> Result<Lateral, String> {
     let alpha = &case.flight.as_ref().ok_or("no flight")?.alpha_deg;
     match config {
@@ -143,33 +129,6 @@ fn compare(
     }
 }
 
-fn oracle_decks() -> Option<Vec<(String, String, String)>> {
-    let dir = common::shared_dir("oracle/cases", "lateral oracle")?;
-    let mut out = Vec::new();
-    let mut dirs: Vec<_> = std::fs::read_dir(&dir)
-        .ok()?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir())
-        .collect();
-    dirs.sort();
-    for d in dirs {
-        let (deck, listing) = (d.join("input.dcm"), d.join("for006.dat"));
-        if !deck.is_file() || !listing.is_file() {
-            continue;
-        }
-        let text = common::text(&listing);
-        if !["BODY ALONE", "WING ALONE", "WING-BODY"]
-            .iter()
-            .any(|p| text.contains(&format!("{p} CONFIGURATION")))
-        {
-            continue;
-        }
-        let name = d.file_name().unwrap().to_string_lossy().into_owned();
-        out.push((name, common::text(&deck), text));
-    }
-    Some(out)
-}
-
 fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
     let mut t = Tally {
         matched: [0; 3],
@@ -177,7 +136,7 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
         misses: Vec::new(),
     };
     for (name, deck, text) in decks {
-        let listings = case_listings(text);
+        let listings = common::case_listings(text);
         for (ci, (case, listing)) in deck.cases.iter().zip(&listings).enumerate() {
             let mut next = 0;
             for listed_case in legacy::read_listing(listing) {
@@ -208,7 +167,14 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
 
 #[test]
 fn lateral_derivatives_agree_with_the_original() {
-    let Some(sources) = oracle_decks() else {
+    let Some(sources) = common::oracle_cases(
+        "lateral oracle",
+        &[
+            "BODY ALONE CONFIGURATION",
+            "WING ALONE CONFIGURATION",
+            "WING-BODY CONFIGURATION",
+        ],
+    ) else {
         return;
     };
     for (rule, title, check) in [

@@ -228,21 +228,6 @@ impl Tally {
     }
 }
 
-/// The listing of each case: the text from one `LIST OF ALL INPUT CARDS` line to the next.
-fn case_listings(text: &str) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
-    for line in text.lines() {
-        if line.contains("LIST OF ALL INPUT CARDS FOR THIS CASE") {
-            out.push(String::new());
-        }
-        if let Some(last) = out.last_mut() {
-            last.push_str(line);
-            last.push('\n');
-        }
-    }
-    out
-}
-
 /// One downwash table: Mach of its page, the page's configuration, line of its header in the
 /// case's listing, rows (alpha, q/q∞, ε, dε/dα; none where not a number).
 struct DownwashTable {
@@ -422,34 +407,6 @@ fn compare_page(
     }
 }
 
-fn oracle_decks() -> Option<Vec<(String, Deck, String)>> {
-    let dir = common::shared_dir("oracle/cases", "tail oracle")?;
-    let mut dirs: Vec<_> = std::fs::read_dir(&dir)
-        .ok()?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir())
-        .collect();
-    dirs.sort();
-    let mut out = Vec::new();
-    for d in dirs {
-        let (deck, listing) = (d.join("input.dcm"), d.join("for006.dat"));
-        if !deck.is_file() || !listing.is_file() {
-            continue;
-        }
-        let text = common::text(&listing);
-        if !text.contains("TAIL CONFIGURATION") {
-            continue;
-        }
-        let name = d.file_name().unwrap().to_string_lossy().into_owned();
-        out.push((
-            name.clone(),
-            datcom::read_deck(&common::text(&deck), &name),
-            text,
-        ));
-    }
-    Some(out)
-}
-
 fn ours_at<'a>(
     cache: &'a mut BTreeMap<usize, Ours>,
     case: &Case,
@@ -468,7 +425,7 @@ fn condition_at(case: &Case, mach: f64, from: usize) -> Option<usize> {
 
 fn run_oracle(decks: &[(String, Deck, String)], rule: SectionReynolds, tally: &mut Tally) {
     for (name, deck, text) in decks {
-        let listings = case_listings(text);
+        let listings = common::case_listings(text);
         for (ci, (case, listing)) in deck.cases.iter().zip(&listings).enumerate() {
             let mut case = case.clone();
             case.section_reynolds = rule;
@@ -603,7 +560,9 @@ fn report(title: &str, tally: &Tally) {
 
 #[test]
 fn tail_tables_agree_with_the_original() {
-    let Some(decks) = oracle_decks() else { return };
+    let Some(decks) = common::oracle_decks("tail oracle", &["TAIL CONFIGURATION"]) else {
+        return;
+    };
     for (rule, title) in [
         (SectionReynolds::Flight, "flight"),
         (SectionReynolds::Original, "original"),

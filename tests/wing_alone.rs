@@ -50,21 +50,6 @@ impl Tally {
     }
 }
 
-/// The listing of each case: the text from one `LIST OF ALL INPUT CARDS` line to the next.
-fn case_listings(text: &str) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
-    for line in text.lines() {
-        if line.contains("LIST OF ALL INPUT CARDS FOR THIS CASE") {
-            out.push(String::new());
-        }
-        if let Some(last) = out.last_mut() {
-            last.push_str(line);
-            last.push('\n');
-        }
-    }
-    out
-}
-
 /// How the wing section is computed for the comparison.
 #[derive(Clone, Copy, PartialEq)]
 enum SectionRe {
@@ -165,34 +150,6 @@ fn compare_table(
     listed_alpha.len()
 }
 
-fn oracle_decks() -> Option<Vec<(String, Deck, String)>> {
-    let dir = common::shared_dir("oracle/cases", "wing_alone oracle")?;
-    let mut dirs: Vec<_> = std::fs::read_dir(&dir)
-        .ok()?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir())
-        .collect();
-    dirs.sort();
-    let mut out = Vec::new();
-    for d in dirs {
-        let (deck, listing) = (d.join("input.dcm"), d.join("for006.dat"));
-        if !deck.is_file() || !listing.is_file() {
-            continue;
-        }
-        let text = common::text(&listing);
-        if !text.contains("WING ALONE CONFIGURATION") {
-            continue;
-        }
-        let name = d.file_name().unwrap().to_string_lossy().into_owned();
-        out.push((
-            name.clone(),
-            datcom::read_deck(&common::text(&deck), &name),
-            text,
-        ));
-    }
-    Some(out)
-}
-
 /// Compares every subsonic wing-alone table of the oracle; returns (tables, rows).
 fn run_oracle(
     decks: &[(String, Deck, String)],
@@ -201,7 +158,7 @@ fn run_oracle(
 ) -> (usize, usize) {
     let (mut tables, mut rows) = (0, 0);
     for (name, deck, text) in decks {
-        let listings = case_listings(text);
+        let listings = common::case_listings(text);
         for (ci, (case, listing)) in deck.cases.iter().zip(&listings).enumerate() {
             let mut next = 0;
             for listed_case in legacy::read_listing(listing) {
@@ -249,7 +206,10 @@ fn report(title: &str, tables: usize, rows: usize, tally: &Tally) {
 
 #[test]
 fn wing_alone_tables_agree_with_the_original() {
-    let Some(decks) = oracle_decks() else { return };
+    let Some(decks) = common::oracle_decks("wing_alone oracle", &["WING ALONE CONFIGURATION"])
+    else {
+        return;
+    };
     for (how, title, floors) in [
         (
             SectionRe::Flight,

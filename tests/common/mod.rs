@@ -38,3 +38,62 @@ pub fn files(dir: &std::path::Path) -> Vec<PathBuf> {
 pub fn text(path: &std::path::Path) -> String {
     String::from_utf8_lossy(&std::fs::read(path).expect("readable file")).into_owned()
 }
+
+/// A listing split where the original lists a case's input cards: one text per case.
+pub fn case_listings(text: &str) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for line in text.lines() {
+        if line.contains("LIST OF ALL INPUT CARDS FOR THIS CASE") {
+            out.push(String::new());
+        }
+        if let Some(last) = out.last_mut() {
+            last.push_str(line);
+            last.push('\n');
+        }
+    }
+    out
+}
+
+/// The oracle cases (../shared/oracle/cases/<name>/ with input.dcm and for006.dat), sorted by
+/// name, whose listing prints one of the `pages` (any page when empty): (name, deck text,
+/// listing text). `None` after printing why `test` is skipped when the oracle is absent.
+pub fn oracle_cases(test: &str, pages: &[&str]) -> Option<Vec<(String, String, String)>> {
+    let dir = shared_dir("oracle/cases", test)?;
+    let mut dirs: Vec<_> = std::fs::read_dir(&dir)
+        .ok()?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_dir())
+        .collect();
+    dirs.sort();
+    let mut out = Vec::new();
+    for d in dirs {
+        let (deck, listing) = (d.join("input.dcm"), d.join("for006.dat"));
+        if !deck.is_file() || !listing.is_file() {
+            continue;
+        }
+        let listing = text(&listing);
+        if !pages.is_empty() && !pages.iter().any(|p| listing.contains(p)) {
+            continue;
+        }
+        let name = d.file_name().unwrap().to_string_lossy().into_owned();
+        out.push((name, text(&deck), listing));
+    }
+    Some(out)
+}
+
+/// [`oracle_cases`] with each deck read.
+pub fn oracle_decks(
+    test: &str,
+    pages: &[&str],
+) -> Option<Vec<(String, datcom::case::Deck, String)>> {
+    let cases = oracle_cases(test, pages)?;
+    Some(
+        cases
+            .into_iter()
+            .map(|(name, deck, listing)| {
+                let deck = datcom::read_deck(&deck, &name);
+                (name, deck, listing)
+            })
+            .collect(),
+    )
+}
