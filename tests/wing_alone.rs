@@ -10,9 +10,8 @@ mod common;
 
 use datcom::case::{Case, Deck};
 use datcom::charts;
-use datcom::deck::cards::Surface;
 use datcom::methods::body::subsonic_limit;
-use datcom::methods::section::{section_characteristics, surface_section, SectionCharacteristics};
+use datcom::methods::section::SectionCharacteristics;
 use datcom::methods::wing::{
     computed_wing_section, figures, helmbold_lift_curve_slope, wing_alone_with_section, WingAlone,
     WingType, WingWarning,
@@ -55,7 +54,8 @@ impl Tally {
 enum SectionRe {
     /// The library: the condition's flight Reynolds number.
     Flight,
-    /// The original's: 10⁶ (no RNNUB reaches the section page).
+    /// The original's (`SectionReynolds::Original`): RNNUB where the deck gives it, else the
+    /// section methods' fixed values (10⁶ for the slope).
     Original,
 }
 
@@ -63,11 +63,10 @@ fn section(case: &Case, how: SectionRe) -> Option<SectionCharacteristics> {
     match how {
         SectionRe::Flight => computed_wing_section(case)?.ok(),
         SectionRe::Original => {
-            let mut s = surface_section(case, Surface::Wing)?.ok()?;
-            for c in &mut s.conditions {
-                c.reynolds_number = None;
-            }
-            section_characteristics(&s.shape, &s.conditions, &s.overrides).ok()
+            // The library's rule for the original's Reynolds number (RNNUB where given).
+            let mut case = case.clone();
+            case.section_reynolds = datcom::case::SectionReynolds::Original;
+            computed_wing_section(&case)?.ok()
         }
     }
 }

@@ -12,9 +12,8 @@ mod common;
 
 use datcom::case::{Case, Deck};
 use datcom::charts;
-use datcom::deck::cards::Surface;
 use datcom::methods::body::subsonic_limit;
-use datcom::methods::section::{section_characteristics, surface_section, SectionCharacteristics};
+use datcom::methods::section::SectionCharacteristics;
 use datcom::methods::wing::computed_wing_section;
 use datcom::methods::wing_body::{
     figures, vortex_interference_factor, wing_body, wing_body_with_section, DragMethod, WingBody,
@@ -117,7 +116,8 @@ fn section_max_lift_given(case: &Case) -> bool {
 enum SectionRe {
     /// The library: the condition's flight Reynolds number.
     Flight,
-    /// The original's: 10⁶ (no RNNUB reaches the section page).
+    /// The original's (`SectionReynolds::Original`): RNNUB where the deck gives it, else the
+    /// section methods' fixed values (10⁶ for the slope).
     Original,
 }
 
@@ -125,11 +125,10 @@ fn section(case: &Case, how: SectionRe) -> Option<SectionCharacteristics> {
     match how {
         SectionRe::Flight => computed_wing_section(case)?.ok(),
         SectionRe::Original => {
-            let mut s = surface_section(case, Surface::Wing)?.ok()?;
-            for c in &mut s.conditions {
-                c.reynolds_number = None;
-            }
-            section_characteristics(&s.shape, &s.conditions, &s.overrides).ok()
+            // The library's rule for the original's Reynolds number (RNNUB where given).
+            let mut case = case.clone();
+            case.section_reynolds = datcom::case::SectionReynolds::Original;
+            computed_wing_section(&case)?.ok()
         }
     }
 }
