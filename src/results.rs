@@ -167,6 +167,22 @@ pub fn planform_area_and_mac(p: &Planform) -> Option<(f64, f64)> {
 /// The original's configuration line for the body alone.
 pub const BODY_ALONE: &str = "DATCOM BODY ALONE CONFIGURATION";
 
+/// Moves the longitudinal columns of a method's result (fields cd, cl, cm, cn, ca, xcp,
+/// cla_per_rad, cma_per_rad, as every static method names them) into a page's coefficients.
+macro_rules! set_longitudinal {
+    ($page:ident, $result:expr) => {{
+        let r = $result;
+        $page.cd = r.cd;
+        $page.cl = r.cl;
+        $page.cm = r.cm;
+        $page.cn = r.cn;
+        $page.ca = r.ca;
+        $page.xcp = r.xcp;
+        $page.cla = r.cla_per_rad;
+        $page.cma = r.cma_per_rad;
+    }};
+}
+
 /// Puts a configuration's sideslip derivatives into its coefficients, or the reason there are
 /// none into its warnings, labelled with the configuration (`wing-body, sideslip: ...`).
 fn add_sideslip(
@@ -210,14 +226,7 @@ fn body_alone_coefficients(
     // Sideslip derivatives of the body alone (DATCOM 5.2.1.1 as the original forms them).
     let lateral = crate::methods::lateral::body_lateral(&b, case);
     add_sideslip(&mut s, &mut warnings, "body alone", Ok(lateral));
-    s.cd = b.cd;
-    s.cl = b.cl;
-    s.cm = b.cm;
-    s.cn = b.cn;
-    s.ca = b.ca;
-    s.xcp = b.xcp;
-    s.cla = b.cla_per_rad;
-    s.cma = b.cma_per_rad;
+    set_longitudinal!(s, b);
     Ok((s, warnings))
 }
 
@@ -242,14 +251,7 @@ fn wing_alone_coefficients(
     let lateral = crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w)
         .map_err(|e| e.to_string());
     add_sideslip(&mut s, &mut warnings, "wing alone", lateral);
-    s.cd = w.cd;
-    s.cl = w.cl;
-    s.cm = w.cm;
-    s.cn = w.cn;
-    s.ca = w.ca;
-    s.xcp = w.xcp;
-    s.cla = w.cla_per_rad;
-    s.cma = w.cma_per_rad;
+    set_longitudinal!(s, w);
     Ok((s, warnings))
 }
 
@@ -264,14 +266,7 @@ pub const WING_BODY_VT_HT: &str = "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFI
 
 fn coefficients(c: &crate::methods::tail::Coefficients) -> StaticCoefficients {
     let mut s = StaticCoefficients::empty(c.cd.len());
-    s.cd = c.cd.clone();
-    s.cl = c.cl.clone();
-    s.cm = c.cm.clone();
-    s.cn = c.cn.clone();
-    s.ca = c.ca.clone();
-    s.xcp = c.xcp.clone();
-    s.cla = c.cla_per_rad.clone();
-    s.cma = c.cma_per_rad.clone();
+    set_longitudinal!(s, c.clone());
     s
 }
 
@@ -328,14 +323,7 @@ fn wing_body_coefficients(
                 .map_err(|e| e.to_string())
             });
     add_sideslip(&mut s, &mut warnings, "wing-body", lateral);
-    s.cd = w.cd;
-    s.cl = w.cl;
-    s.cm = w.cm;
-    s.cn = w.cn;
-    s.ca = w.ca;
-    s.xcp = w.xcp;
-    s.cla = w.cla_per_rad;
-    s.cma = w.cma_per_rad;
+    set_longitudinal!(s, w);
     Ok((s, warnings))
 }
 
