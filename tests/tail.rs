@@ -783,18 +783,7 @@ const SPOTS: &[(&str, &[f64], f64)] = &[
 #[test]
 fn tail_charts_give_their_data_statement_values() {
     assert!(charts::invalid().is_empty(), "{:?}", charts::invalid());
-    for id in figures::ALL {
-        assert!(charts::get(id).is_some(), "chart {id} is embedded");
-        assert!(
-            SPOTS.iter().filter(|s| s.0 == *id).count() >= 2,
-            "chart {id} has spot values"
-        );
-    }
-    for (id, args, expected) in SPOTS {
-        let l = charts::get(id).expect("chart").lookup(args);
-        assert_eq!(l.value, Some(*expected), "{id} at {args:?}");
-        assert!(l.warnings.is_empty(), "{id} at {args:?}: {:?}", l.warnings);
-    }
+    common::check_chart_spots(figures::ALL.iter().copied(), SPOTS);
     // Beyond 54° figure 68a follows the parabola through its last three nodes (TBFUNX LEXU=2):
     // through (45, 2.25), (50, 2.75), (54, 3.0) at 56: 3.0 + …
     let l = charts::get("4.4.1-68a").unwrap().lookup(&[56.0]);

@@ -589,18 +589,13 @@ fn wing_charts_give_their_data_statement_values() {
             "chart {id} is embedded and valid"
         );
     }
-    for id in figures::ALL
-        .iter()
-        .filter(|id| **id != figures::CUTOFF_REYNOLDS)
-    {
-        assert!(
-            SPOTS.iter().filter(|s| s.0 == *id).count() >= 2,
-            "chart {id} has spot values"
-        );
-    }
-    for (id, args, expected) in SPOTS {
-        let l = charts::get(id).expect("chart").lookup(args);
-        assert_eq!(l.value, Some(*expected), "{id} at {args:?}");
-        assert!(l.warnings.is_empty(), "{id} at {args:?}: {:?}", l.warnings);
-    }
+    // Spot values for every chart but the cut-off Reynolds number one (only its embedding is
+    // checked here).
+    common::check_chart_spots(
+        figures::ALL
+            .iter()
+            .copied()
+            .filter(|id| *id != figures::CUTOFF_REYNOLDS),
+        SPOTS,
+    );
 }

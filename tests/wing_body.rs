@@ -571,16 +571,5 @@ const SPOTS: &[(&str, &[f64], f64)] = &[
 #[test]
 fn wing_body_charts_give_their_data_statement_values() {
     assert!(charts::invalid().is_empty(), "{:?}", charts::invalid());
-    for id in figures::ALL {
-        assert!(charts::get(id).is_some(), "chart {id} is embedded");
-        assert!(
-            SPOTS.iter().filter(|s| s.0 == *id).count() >= 2,
-            "chart {id} has spot values"
-        );
-    }
-    for (id, args, expected) in SPOTS {
-        let l = charts::get(id).expect("chart").lookup(args);
-        assert_eq!(l.value, Some(*expected), "{id} at {args:?}");
-        assert!(l.warnings.is_empty(), "{id} at {args:?}: {:?}", l.warnings);
-    }
+    common::check_chart_spots(figures::ALL.iter().copied(), SPOTS);
 }

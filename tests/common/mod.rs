@@ -97,3 +97,24 @@ pub fn oracle_decks(
             .collect(),
     )
 }
+
+/// Spot values of charts read off the original's DATA statements: (chart id, arguments,
+/// value at a node).
+pub type Spots = &'static [(&'static str, &'static [f64], f64)];
+
+/// Every chart of `ids` is embedded and has at least two spot values, and every spot value is
+/// the chart's value at its node, read without a warning.
+pub fn check_chart_spots<'a>(ids: impl IntoIterator<Item = &'a str>, spots: Spots) {
+    for id in ids {
+        assert!(datcom::charts::get(id).is_some(), "chart {id} is embedded");
+        assert!(
+            spots.iter().filter(|s| s.0 == id).count() >= 2,
+            "chart {id} has spot values"
+        );
+    }
+    for (id, args, expected) in spots {
+        let l = datcom::charts::get(id).expect("chart").lookup(args);
+        assert_eq!(l.value, Some(*expected), "{id} at {args:?}");
+        assert!(l.warnings.is_empty(), "{id} at {args:?}: {:?}", l.warnings);
+    }
+}
