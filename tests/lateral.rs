@@ -30,7 +30,7 @@ const MACH_PRINTED: f64 = 0.0005;
 /// docs/lateral.md explains each miss).
 const FLOORS_BODY: [usize; 3] = [99, 99, 104];
 const FLOORS_WING: [usize; 3] = [120, 146, 150];
-const FLOORS_WING_BODY: [usize; 3] = [472, 472, 386];
+const FLOORS_WING_BODY: [usize; 3] = [472, 472, 398];
 
 #[derive(Clone, Copy, PartialEq)]
 enum Config {

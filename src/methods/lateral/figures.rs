@@ -14,6 +14,9 @@ pub const ASPECT_ROLL_PER_LIFT: &str = "5.1.2.1-28b";
 pub const DIHEDRAL_ROLL: &str = "5.1.2.1-29";
 /// 5.1.2.1-30a: its compressibility factor K_MΓ (A/cos Λc/2, M cos Λc/2).
 pub const DIHEDRAL_COMPRESSIBILITY: &str = "5.1.2.1-30a";
+/// 5.1.2.1-31: Clβ/Γ·β/κ of the dihedral outboard of a station (taper, βA/κ,
+/// atan(tan Λc/4/β), η).
+pub const NON_UNIFORM_DIHEDRAL_ROLL: &str = "5.1.2.1-31";
 /// 5.1.2.1-30b: ΔClβ/(θ tan Λc/4), per deg² (taper, A).
 pub const TWIST_ROLL: &str = "5.1.2.1-30b";
 
@@ -34,6 +37,7 @@ pub const ALL: &[&str] = &[
     DIHEDRAL_ROLL,
     DIHEDRAL_COMPRESSIBILITY,
     TWIST_ROLL,
+    NON_UNIFORM_DIHEDRAL_ROLL,
     FUSELAGE_CORRECTION,
     KN_STEP_A,
     KN_STEP_B,

@@ -14,8 +14,7 @@
 //!   wing's Clβ terms with K_f, wing height and body diameter; module `wing_body`.
 //!
 //! Not covered: tail and total configurations (5.3.1.x), Mach
-//! numbers above STMACH, non-uniform dihedral (figure 5.1.2.1-31), low-aspect-ratio wing-body
-//! pages ($LARWB).
+//! numbers above STMACH, low-aspect-ratio wing-body pages ($LARWB).
 //!
 //! Axes, signs and units of every output: sideslip β positive nose left (wind from the
 //! right); CY positive to the right, Cl positive right wing down, Cn positive nose right; all
@@ -39,7 +38,7 @@ use crate::methods::wing::WingMethodError;
 use crate::results::planform_area_and_mac;
 
 pub use body::body_lateral;
-pub use wing::{wing_lateral, RollingMomentTerms, WingLateralTerms};
+pub use wing::{wing_lateral, DihedralRoll, RollingMomentTerms, WingLateralTerms};
 pub use wing_body::{wing_body_lateral, WingBodyLateralTerms};
 
 /// Why the lateral derivatives cannot be computed.
@@ -74,8 +73,6 @@ pub enum LateralWarning {
     NoReferenceSpan,
     /// The wing lift at Mach 0 (the CYβ term) cannot be computed: no CYβ.
     NoMachZeroLift { reason: String },
-    /// Non-uniform dihedral (SSPNDD given): figure 5.1.2.1-31 is not covered, no Clβ.
-    NonUniformDihedral,
     /// The exposed semispan equals the semispan (no body width at the wing root): the wing
     /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
     NoBodyWidthAtWing,
@@ -95,10 +92,6 @@ impl fmt::Display for LateralWarning {
             LateralWarning::NoBodyWidthAtWing => write!(
                 f,
                 "SSPNE equals SSPN (no body width at the wing root): no wing-body CYB"
-            ),
-            LateralWarning::NonUniformDihedral => write!(
-                f,
-                "non-uniform dihedral (SSPNDD): figure 5.1.2.1-31 is not covered, no wing CLB"
             ),
         }
     }

@@ -44,14 +44,13 @@ pub struct WingLateralTerms {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "planform", rename_all = "snake_case")]
 pub enum RollingMomentTerms {
-    /// Straight tapered wing (figures 5.1.2.1-27 to -30).
+    /// Straight tapered wing (figures 5.1.2.1-27 to -28b, -30b, and the dihedral charts).
     Straight {
         sweep_per_cl: f64,
         sweep_compressibility: f64,
         aspect_per_cl: f64,
-        dihedral: f64,
-        dihedral_compressibility: f64,
         twist: f64,
+        dihedral: DihedralRoll,
     },
     /// Double-delta and cranked wings: the inboard panel and the extended outboard panel
     /// (sweep term × compressibility + aspect-ratio term, per unit lift), each weighted by
@@ -87,26 +86,83 @@ fn panel_roll_per_cl(
     Ok(sweep + aspect)
 }
 
+/// The dihedral charts of a straight wing's Clβ.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "dihedral", rename_all = "snake_case")]
+pub enum DihedralRoll {
+    /// Uniform dihedral (SSPNDD not given or zero): Clβ/Γ per deg² of figure 5.1.2.1-29 at
+    /// |Λc/2|, and its compressibility factor K_MΓ of figure 5.1.2.1-30a.
+    Uniform {
+        per_dihedral: f64,
+        compressibility: f64,
+    },
+    /// Dihedral changing at the station SSPNDD from the tip (DHDADI inboard, DHDADO outboard):
+    /// figure 5.1.2.1-31 at the station η = 1 − SSPNDD/SSPN where the outboard panel starts
+    /// and at the tip (η = 1), with κ = c_lα/(2π) of the section and β = √(1 − M²).
+    NonUniform {
+        /// κ/β.
+        kappa_over_beta: f64,
+        /// Figure 5.1.2.1-31 at the outboard panel's root and at the tip.
+        at_break: f64,
+        at_tip: f64,
+    },
+}
+
+impl DihedralRoll {
+    /// The dihedral term of Clβ per degree of sideslip on the wing's own area, for inboard
+    /// and outboard dihedral Γ_i, Γ_o in degrees: Γ_i (Clβ/Γ) K_MΓ (uniform), or
+    /// κ/β·[(f(1) − f(η))Γ_o + f(η)Γ_i]/57.3 with f figure 5.1.2.1-31 (non-uniform: the
+    /// outboard panel adds its dihedral from η to the tip, the inboard dihedral spans the
+    /// wing up to η).
+    pub fn term(&self, dihedral_in_deg: f64, dihedral_out_deg: f64) -> f64 {
+        match *self {
+            DihedralRoll::Uniform {
+                per_dihedral,
+                compressibility,
+            } => dihedral_in_deg * per_dihedral * compressibility,
+            DihedralRoll::NonUniform {
+                kappa_over_beta,
+                at_break,
+                at_tip,
+            } => {
+                kappa_over_beta
+                    * ((at_tip - at_break) * dihedral_out_deg + at_break * dihedral_in_deg)
+                    / DEG_PER_RAD
+            }
+        }
+    }
+}
+
 /// The chart values of a straight wing's Clβ, as [`straight_roll_charts`] reads them (the
 /// fields of [`RollingMomentTerms::Straight`]).
 pub(super) struct StraightRollCharts {
     pub sweep_per_cl: f64,
     pub sweep_compressibility: f64,
     pub aspect_per_cl: f64,
-    pub dihedral: f64,
-    pub dihedral_compressibility: f64,
     pub twist: f64,
+    pub dihedral: DihedralRoll,
+}
+
+/// Where the dihedral changes and what the non-uniform dihedral chart needs.
+pub(super) struct DihedralBreak {
+    /// η = (SSPN − SSPNDD)/SSPN.
+    pub eta: f64,
+    /// Section lift-curve slope, per radian, at this Mach number.
+    pub section_slope_per_rad: f64,
+    /// Quarter-chord sweep tangent of the inboard panel.
+    pub tan_quarter_chord: f64,
 }
 
 /// The chart values of a straight wing's Clβ (DATCOM 5.1.2.1 equation b): figures
 /// 5.1.2.1-27 and -28a (sweep term and its compressibility factor, at |Λc/2|; a forward-swept
 /// half chord takes the magnitude of the chart value, as the original), -28b (aspect ratio),
-/// -29 and -30a (dihedral and its compressibility factor), -30b (twist).
+/// -30b (twist), and for the dihedral -29 and -30a (uniform) or -31 (a break at SSPNDD).
 pub(super) fn straight_roll_charts(
     taper: f64,
     aspect_ratio: f64,
     half_chord: Sweep,
     mach: f64,
+    dihedral_break: Option<DihedralBreak>,
     warnings: &mut Vec<LateralWarning>,
 ) -> Result<StraightRollCharts, LateralError> {
     let x_aspect = aspect_ratio / half_chord.cos;
@@ -130,23 +186,46 @@ pub(super) fn straight_roll_charts(
         warnings,
     )?;
     let twist = read(figures::TWIST_ROLL, &[taper, aspect_ratio], warnings)?;
-    let dihedral_compressibility = read(
-        figures::DIHEDRAL_COMPRESSIBILITY,
-        &[x_aspect, x_mach],
-        warnings,
-    )?;
-    let dihedral = read(
-        figures::DIHEDRAL_ROLL,
-        &[taper, half_chord.deg.abs(), aspect_ratio],
-        warnings,
-    )?;
+    let dihedral = match dihedral_break {
+        None => DihedralRoll::Uniform {
+            compressibility: read(
+                figures::DIHEDRAL_COMPRESSIBILITY,
+                &[x_aspect, x_mach],
+                warnings,
+            )?,
+            per_dihedral: read(
+                figures::DIHEDRAL_ROLL,
+                &[taper, half_chord.deg.abs(), aspect_ratio],
+                warnings,
+            )?,
+        },
+        Some(at) => {
+            let beta = (1.0 - mach * mach).abs().sqrt();
+            let kappa = at.section_slope_per_rad / (2.0 * PI);
+            let sweep = (at.tan_quarter_chord / beta).atan().to_degrees();
+            let x3 = beta * aspect_ratio / kappa;
+            let mut chart = |eta: f64| {
+                read(
+                    figures::NON_UNIFORM_DIHEDRAL_ROLL,
+                    &[taper, x3, sweep, eta],
+                    warnings,
+                )
+            };
+            let at_break = chart(at.eta)?;
+            let at_tip = chart(1.0)?;
+            DihedralRoll::NonUniform {
+                kappa_over_beta: kappa / beta,
+                at_break,
+                at_tip,
+            }
+        }
+    };
     Ok(StraightRollCharts {
         sweep_per_cl,
         sweep_compressibility,
         aspect_per_cl,
-        dihedral,
-        dihedral_compressibility,
         twist,
+        dihedral,
     })
 }
 
@@ -196,7 +275,9 @@ pub(super) fn panel_sweep_and_aspect_roll(
 ///   the deck's length unit);
 /// - Clβ, straight wings with A ≥ 1 and uniform dihedral (equation b):
 ///   [CL·S/S_w·((Clβ/CL)_Λ K_MΛ + (Clβ/CL)_A) + θ tan Λc/4,i ΔClβ/(θ tan Λc/4) + Γ (Clβ/Γ) K_MΓ]
-///   · S_w/S · b_w/b; A < 1: [−2/(3A)·CL − ΓA/6·S_w/S]·b_w/b per radian (per deg² for Γ);
+///   · S_w/S · b_w/b; with a dihedral break (SSPNDD) the dihedral term is that of figure
+///   5.1.2.1-31 ([`DihedralRoll::NonUniform`]); A < 1: [−2/(3A)·CL − ΓA/6·S_w/S]·b_w/b per
+///   radian (per deg² for Γ);
 ///   double-delta and cranked wings: the lift-weighted panel values, the inboard panel on its
 ///   theoretical planform scaled by its exposed span fraction, the outboard panel extended to
 ///   mid inboard panel, without dihedral and twist.
@@ -300,6 +381,7 @@ pub fn wing_lateral(
                 b_ref: b,
                 mach,
                 dihedral_in,
+                dihedral_out,
                 effective_dihedral_deg,
             },
             &mut warnings,
@@ -335,6 +417,7 @@ struct RollInputs<'a> {
     b_ref: f64,
     mach: f64,
     dihedral_in: f64,
+    dihedral_out: f64,
     effective_dihedral_deg: f64,
 }
 
@@ -367,21 +450,23 @@ fn rolling_moment(
                 .collect();
             return Ok((clb, None));
         }
-        if plan.sspndd.is_some_and(|y| y != 0.0) {
-            warnings.push(LateralWarning::NonUniformDihedral);
-            return Ok((vec![None; n], None));
-        }
         let StraightRollCharts {
             sweep_per_cl,
             sweep_compressibility,
             aspect_per_cl,
-            dihedral,
-            dihedral_compressibility,
             twist,
-        } = straight_roll_charts(r.taper, a, p.inboard.half_chord, r.mach, warnings)?;
+            dihedral,
+        } = straight_roll_charts(
+            r.taper,
+            a,
+            p.inboard.half_chord,
+            r.mach,
+            dihedral_break(plan, wing),
+            warnings,
+        )?;
         let tan_quarter_in = 0.5 * (p.inboard.leading_edge.tan + p.inboard.half_chord.tan);
         let twist_term = plan.twista_deg.unwrap_or(0.0) * tan_quarter_in * twist;
-        let dihedral_term = r.dihedral_in * dihedral * dihedral_compressibility;
+        let dihedral_term = dihedral.term(r.dihedral_in, r.dihedral_out);
         let lift_term = sweep_per_cl * sweep_compressibility + aspect_per_cl;
         let clb = (0..n)
             .map(|k| {
@@ -398,9 +483,8 @@ fn rolling_moment(
                 sweep_per_cl,
                 sweep_compressibility,
                 aspect_per_cl,
-                dihedral,
-                dihedral_compressibility,
                 twist,
+                dihedral,
             }),
         ));
     }
@@ -463,6 +547,22 @@ fn rolling_moment(
     ))
 }
 
+/// The dihedral break of a straight wing for figure 5.1.2.1-31: none for uniform dihedral
+/// (SSPNDD not given or zero).
+pub(super) fn dihedral_break(
+    plan: &crate::case::Planform,
+    wing: &WingAlone,
+) -> Option<DihedralBreak> {
+    let station = plan.sspndd.filter(|&y| y != 0.0)?;
+    let semispan = plan.sspn?;
+    let p = &wing.terms.planform;
+    Some(DihedralBreak {
+        eta: (semispan - station) / semispan,
+        section_slope_per_rad: wing.terms.section.lift_curve_slope_per_rad,
+        tan_quarter_chord: 0.5 * (p.inboard.leading_edge.tan + p.inboard.half_chord.tan),
+    })
+}
+
 /// The wing's CL at Mach 0 at each angle (the original's CLMCH0): the wing-alone method at
 /// M = 0 with the first Mach number's section lift-curve slope and, for the section maximum
 /// lift, CLMAXL in place of the first CLMAX, at this condition's Reynolds number. None, with a
@@ -520,5 +620,70 @@ fn mach_zero_lift(
             });
             vec![None; n]
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Non-uniform dihedral worked by hand (DATCOM 5.1.2.1, figure 5.1.2.1-31):
+    /// taper λ = 0.5, A = 4, M = 0 (β = 1), unswept quarter chord (atan(tan Λc/4/β) = 0°),
+    /// section slope 2π per rad (κ = 1, so βA/κ = 4), SSPN = 10 and SSPNDD = 4 (η = 0.6),
+    /// Γ_i = 2°, Γ_o = 10°.
+    /// Figure 5.1.2.1-31 (datcom.f DATA T31B, λ = 0.5, curve βA/κ = 4, sweep 0°):
+    ///   f(0.6) = −0.0045, f(1.0) = −0.00935.
+    /// Dihedral term = κ/β·[(f(1) − f(η))·Γ_o + f(η)·Γ_i]/57.29578
+    ///   = [(−0.00935 + 0.0045)·10 + (−0.0045)·2]/57.29578 = (−0.0485 − 0.009)/57.29578
+    ///   = −0.0575/57.29578 = −1.003564E-3 per degree of sideslip.
+    #[test]
+    fn non_uniform_dihedral_by_hand() {
+        let mut warnings = Vec::new();
+        let half_chord = Sweep {
+            deg: 0.0,
+            cos: 1.0,
+            tan: 0.0,
+        };
+        let charts = straight_roll_charts(
+            0.5,
+            4.0,
+            half_chord,
+            0.0,
+            Some(DihedralBreak {
+                eta: 0.6,
+                section_slope_per_rad: 2.0 * PI,
+                tan_quarter_chord: 0.0,
+            }),
+            &mut warnings,
+        )
+        .unwrap();
+        // Figure 5.1.2.1-28a starts at M cos Λ = 0.1 (its warning at M = 0 is expected); the
+        // dihedral chart is read at its nodes.
+        assert!(
+            !warnings
+                .iter()
+                .any(|w| w.to_string().contains("5.1.2.1-31")),
+            "{warnings:?}"
+        );
+        let DihedralRoll::NonUniform {
+            at_break, at_tip, ..
+        } = charts.dihedral
+        else {
+            panic!("expected the non-uniform dihedral chart");
+        };
+        assert!((at_break + 0.0045).abs() < 1e-9 && (at_tip + 0.00935).abs() < 1e-9);
+        let term = charts.dihedral.term(2.0, 10.0);
+        assert!((term + 1.003564e-3).abs() < 1e-9, "{term}");
+    }
+
+    /// Uniform dihedral: Γ·(Clβ/Γ)·K_MΓ with the two chart values given, Γ = 5°:
+    /// 5 × (−2.0E-4) × 1.1 = −1.1E-3 per degree; the outboard dihedral plays no part.
+    #[test]
+    fn uniform_dihedral_term() {
+        let d = DihedralRoll::Uniform {
+            per_dihedral: -2.0e-4,
+            compressibility: 1.1,
+        };
+        assert!((d.term(5.0, 40.0) + 1.1e-3).abs() < 1e-15);
     }
 }

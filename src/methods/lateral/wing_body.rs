@@ -7,7 +7,8 @@ use serde::Serialize;
 use super::body::lateral_reference_span;
 use super::figures::{self, read};
 use super::wing::{
-    panel_sweep_and_aspect_roll, straight_roll_charts, StraightRollCharts, DEG_PER_RAD,
+    dihedral_break, panel_sweep_and_aspect_roll, straight_roll_charts, StraightRollCharts,
+    DEG_PER_RAD,
 };
 use super::{finite, wing_inputs, Lateral, LateralError, LateralWarning, WingInputs};
 use crate::case::Case;
@@ -334,7 +335,7 @@ struct RollParts {
 }
 
 /// Chart terms of DATCOM 5.1.2.1 for the wing-body Clβ; none where the original's wing-body
-/// equation has no defined value here (straight wing with A < 1 or non-uniform dihedral).
+/// equation has no defined value here (straight wing with A < 1).
 fn roll_parts(
     case: &Case,
     wing: &WingAlone,
@@ -350,24 +351,27 @@ fn roll_parts(
         if a < 1.0 {
             return Ok(None);
         }
-        if plan.sspndd.is_some_and(|y| y != 0.0) {
-            warnings.push(LateralWarning::NonUniformDihedral);
-            return Ok(None);
-        }
         let StraightRollCharts {
             sweep_per_cl,
             sweep_compressibility,
             aspect_per_cl,
-            dihedral,
-            dihedral_compressibility,
             twist,
-        } = straight_roll_charts(tip / root, a, p.inboard.half_chord, mach, warnings)?;
+            dihedral,
+        } = straight_roll_charts(
+            tip / root,
+            a,
+            p.inboard.half_chord,
+            mach,
+            dihedral_break(plan, wing),
+            warnings,
+        )?;
         let tan_quarter_in = 0.5 * (p.inboard.leading_edge.tan + p.inboard.half_chord.tan);
+        let dihedral_in = plan.dhdadi_deg.unwrap_or(0.0);
         return Ok(Some(RollParts {
             straight: true,
             sweep: sweep_per_cl * sweep_compressibility,
             aspect: aspect_per_cl,
-            dihedral: plan.dhdadi_deg.unwrap_or(0.0) * dihedral * dihedral_compressibility,
+            dihedral: dihedral.term(dihedral_in, plan.dhdado_deg.unwrap_or(dihedral_in)),
             twist: plan.twista_deg.unwrap_or(0.0) * tan_quarter_in * twist,
         }));
     }
