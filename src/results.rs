@@ -271,11 +271,16 @@ fn coefficients(c: &crate::methods::tail::Coefficients) -> StaticCoefficients {
 }
 
 /// A configuration with tails at one condition (DATCOM 4.4, 4.5, totals), taken from the
-/// totals computed once for the condition.
+/// totals computed once for the condition, with its sideslip derivatives: the sum of the
+/// wing-body's and the tails' (DATCOM 5.2.2.1, 5.2.3.1, 5.1.2.1 on the horizontal tail,
+/// 5.3.1.1 for the vertical tail and ventral fin), as the original sums them.
 fn tail_configuration_coefficients(
+    case: &Case,
+    condition_index: usize,
     totals: &Result<crate::methods::tail::ConfigurationTotals, String>,
     part: &str,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
+    use crate::methods::lateral::{self, Fin};
     let t = totals.as_ref().map_err(Clone::clone)?;
     let c = match part {
         WING_BODY_HT => t.wing_body_horizontal_tail.as_ref(),
@@ -283,8 +288,58 @@ fn tail_configuration_coefficients(
         _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
     }
     .ok_or_else(|| format!("{part}: not computed"))?;
-    let warnings = t.warnings.iter().map(|w| format!("tails: {w}")).collect();
-    Ok((coefficients(c), warnings))
+    let mut warnings: Vec<String> = t.warnings.iter().map(|w| format!("tails: {w}")).collect();
+    let mut s = coefficients(c);
+    let alpha = &t.alpha_deg;
+    let wb = &t.terms.wing_body;
+    let with_ht = part != WING_BODY_VT;
+    let with_fins = part != WING_BODY_HT;
+    let mut parts = vec![lateral::wing_body_lateral(
+        case,
+        condition_index,
+        alpha,
+        &wb.terms.wing,
+        wb,
+    )];
+    if with_ht {
+        if let Some(ht) = &t.terms.horizontal_tail {
+            parts.push(lateral::horizontal_tail_lateral(
+                case,
+                condition_index,
+                alpha,
+                ht,
+            ));
+        }
+    }
+    if with_fins {
+        if case.vertical_tail.is_some() {
+            parts.push(lateral::fin_lateral(
+                case,
+                condition_index,
+                alpha,
+                Fin::VerticalTail,
+            ));
+        }
+        if case.ventral_fin.is_some() {
+            parts.push(lateral::fin_lateral(
+                case,
+                condition_index,
+                alpha,
+                Fin::VentralFin,
+            ));
+        }
+    }
+    let total = parts
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()
+        .map(|p| {
+            let mut total = lateral::sum(&p.iter().collect::<Vec<_>>());
+            total.warnings = p.into_iter().flat_map(|l| l.warnings).collect();
+            total
+        })
+        .map_err(|e| e.to_string());
+    add_sideslip(&mut s, &mut warnings, "configuration with tails", total);
+    Ok((s, warnings))
 }
 
 /// The wing-body coefficients at one condition (DATCOM 4.3), or the reason there are none.
@@ -438,7 +493,7 @@ pub fn run_case(case: &Case) -> CaseResults {
                             crate::methods::tail::configuration(case, index, &f.alpha_deg)
                                 .map_err(|e| format!("configuration with tails: {e}"))
                         });
-                        tail_configuration_coefficients(t, part)
+                        tail_configuration_coefficients(case, index, t, part)
                     }
                 };
                 let mut entry = ConditionResults {

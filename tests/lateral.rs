@@ -20,6 +20,7 @@ use datcom::methods::wing::wing_alone;
 use datcom::methods::wing_body::wing_body;
 use datcom::report::compare::agrees;
 use datcom::report::legacy::{self, ListedCondition};
+use datcom::results::{run_case, CaseResults};
 
 const COLUMNS: [&str; 3] = ["CYB", "CNB", "CLB"];
 /// Angles of attack in the listing are printed with one decimal (F5.1).
@@ -30,13 +31,18 @@ const MACH_PRINTED: f64 = 0.0005;
 /// docs/lateral.md explains each miss).
 const FLOORS_BODY: [usize; 3] = [99, 99, 104];
 const FLOORS_WING: [usize; 3] = [120, 146, 150];
-const FLOORS_WING_BODY: [usize; 3] = [472, 472, 398];
+const FLOORS_WING_BODY: [usize; 3] = [30, 30, 398];
+const FLOORS_WING_BODY_HT: [usize; 3] = [4, 4, 40];
+const FLOORS_WING_BODY_VT: [usize; 3] = [4, 4, 51];
+const FLOORS_WING_BODY_VT_HT: [usize; 3] = [20, 20, 215];
 
 #[derive(Clone, Copy, PartialEq)]
 enum Config {
     Body,
     Wing,
     WingBody,
+    /// The configurations with tails, from `results::run_case` (the sums of the components).
+    Tails(&'static str),
 }
 
 impl Config {
@@ -45,6 +51,7 @@ impl Config {
             Config::Body => "BODY ALONE CONFIGURATION",
             Config::Wing => "WING ALONE CONFIGURATION",
             Config::WingBody => "WING-BODY CONFIGURATION",
+            Config::Tails(page) => page,
         }
     }
 }
@@ -55,9 +62,39 @@ struct Tally {
     misses: Vec<String>,
 }
 
-fn ours(case: &Case, k: usize, config: Config) -> Result<Lateral, String> {
+/// The sideslip columns of page `page` at condition `k` of a run of the case.
+fn from_run(results: &CaseResults, k: usize, page: &str) -> Result<Lateral, String> {
+    let condition = &results
+        .conditions
+        .iter()
+        .filter(|c| c.configuration == page)
+        .nth(k)
+        .ok_or_else(|| format!("no {page} in our run"))?;
+    let s = &condition.static_coefficients;
+    Ok(Lateral {
+        alpha_deg: condition.alpha_deg.clone(),
+        cyb: s.cyb.clone(),
+        cnb: s.cnb.clone(),
+        clb: s.clb.clone(),
+        wing_terms: None,
+        wing_body_terms: None,
+        fin_terms: None,
+        warnings: Vec::new(),
+    })
+}
+
+fn ours(
+    case: &Case,
+    k: usize,
+    config: Config,
+    run: &mut Option<CaseResults>,
+) -> Result<Lateral, String> {
     let alpha = &case.flight.as_ref().ok_or("no flight")?.alpha_deg;
     match config {
+        Config::Tails(page) => {
+            let results = run.get_or_insert_with(|| run_case(case));
+            from_run(results, k, page)
+        }
         Config::Body => {
             let b = case.body.as_ref().ok_or("no body")?;
             let g = body(b).map_err(|e| e.to_string())?;
@@ -76,16 +113,8 @@ fn ours(case: &Case, k: usize, config: Config) -> Result<Lateral, String> {
     }
 }
 
-fn compare(
-    case: &Case,
-    k: usize,
-    listed: &ListedCondition,
-    at: &str,
-    config: Config,
-    t: &mut Tally,
-) {
+fn compare(result: Result<Lateral, String>, listed: &ListedCondition, at: &str, t: &mut Tally) {
     let table = listed.statics.as_ref().expect("a static table");
-    let result = ours(case, k, config);
     let unit = if listed.deriv_per_radian {
         1.0
     } else {
@@ -98,7 +127,6 @@ fn compare(
             let Some(printed) = table.column(column).and_then(|v| v.get(row)) else {
                 continue;
             };
-            t.total[j] += 1;
             let mine = match &result {
                 Ok(r) => r
                     .alpha_deg
@@ -112,11 +140,14 @@ fn compare(
                     .map(|v| v * unit),
                 Err(_) => None,
             };
+            // Rows the original leaves blank (CYB, CNB after the first row of a
+            // configuration) count only when we print a number there.
             let ok = match (mine, printed) {
                 (Some(o), Some(p)) => agrees(column, o, *p),
-                (None, None) => true,
+                (None, None) => continue,
                 _ => false,
             };
+            t.total[j] += 1;
             if ok {
                 t.matched[j] += 1;
             } else {
@@ -139,6 +170,7 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
         let listings = common::case_listings(text);
         for (ci, (case, listing)) in deck.cases.iter().zip(&listings).enumerate() {
             let mut next = 0;
+            let mut our_run = None;
             for listed_case in legacy::read_listing(listing) {
                 for listed in &listed_case.conditions {
                     if !listed.configuration.contains(config.page()) || listed.statics.is_none() {
@@ -157,7 +189,8 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
                         continue;
                     }
                     let at = format!("{name} case {} line {}", ci + 1, listed.row.line);
-                    compare(case, k, listed, &at, config, &mut t);
+                    let result = ours(case, k, config, &mut our_run);
+                    compare(result, listed, &at, &mut t);
                 }
             }
         }
@@ -173,6 +206,9 @@ fn lateral_derivatives_agree_with_the_original() {
             "BODY ALONE CONFIGURATION",
             "WING ALONE CONFIGURATION",
             "WING-BODY CONFIGURATION",
+            "WING-BODY-HORIZONTAL TAIL CONFIGURATION",
+            "WING-BODY-VERTICAL TAIL CONFIGURATION",
+            "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION",
         ],
     ) else {
         return;
@@ -203,6 +239,18 @@ fn lateral_derivatives_agree_with_the_original() {
             (Config::Body, FLOORS_BODY),
             (Config::Wing, FLOORS_WING),
             (Config::WingBody, FLOORS_WING_BODY),
+            (
+                Config::Tails("WING-BODY-HORIZONTAL TAIL CONFIGURATION"),
+                FLOORS_WING_BODY_HT,
+            ),
+            (
+                Config::Tails("WING-BODY-VERTICAL TAIL CONFIGURATION"),
+                FLOORS_WING_BODY_VT,
+            ),
+            (
+                Config::Tails("WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION"),
+                FLOORS_WING_BODY_VT_HT,
+            ),
         ] {
             let t = run(&decks, config);
             eprintln!("{title}: {}", config.page());
@@ -258,7 +306,8 @@ fn a_build_run_reports_wing_body_sideslip_derivatives() {
     );
     for (k, entry) in entries.iter().enumerate() {
         let s = &entry.static_coefficients;
-        let direct = ours(case, k, Config::WingBody).expect("the method runs on the UAV");
+        let direct =
+            ours(case, k, Config::WingBody, &mut None).expect("the method runs on the UAV");
         assert!(
             s.cyb[0].is_some() && s.cnb[0].is_some(),
             "CYB and CNB on the first row"
@@ -268,4 +317,59 @@ fn a_build_run_reports_wing_body_sideslip_derivatives() {
         assert_eq!(s.cnb, direct.cnb);
         assert_eq!(s.clb, direct.clb);
     }
+}
+
+/// The vertical tail's sideslip derivatives worked by hand (DATCOM 5.3.1.1 as the original's
+/// SUBLAT applies it), on a deck in metres with round numbers:
+///
+/// - wing: rectangle, SSPN 5, chord 1 → S_w = 10 (the reference area), A_w = 10, Λc/4 = 0,
+///   b = 2·SSPN = 10; ZW = 0, ALIW = 0 → z_w = 0. Body: cylinder of radius 0.5 → d = 1.
+/// - vertical tail: rectangle (taper 1), chord 1, SSPN 1.5, SSPNE 1.0 at XV = 8, ZV = 0; no
+///   horizontal tail; section CLALPA 0.1 per deg. XCG = 3, ZCG = 0; Mach 0.2.
+///
+/// 1. b_v/2r₁ = 1.5/(2·(1.5 − 1.0)) = 1.5; S_v = 1.5, A_v = 1.5²/1.5 = 1.5.
+/// 2. Figure 5.3.1.1-22a (taper 1.0, 1.5) = 1.46 (datcom.f DATA Y22A, 8th value);
+///    A_eff = 1.46 × 1.5 = 2.19 (no horizontal tail: K_H = 0).
+/// 3. Figure 5.3.1.1-22d (1.5) = 0.75 (DATA Y5322D).
+/// 4. Sidewash 0.724 + 3.06·(1.5/10)/(1 + 1) + 0.4·0/1 + 0.009·10 = 1.0435.
+/// 5. κ = 0.1·57.29578/(2π) = 0.9118907; Λc/2 = 0 so the β term drops:
+///    CLα_v = 2π·2.19/(2 + √((2.19/0.9118907)² + 4)) = 13.760176/5.125332 = 2.684738 /rad.
+/// 6. CYβ = −0.75 × 2.684738 × 1.0435 × 1.5/10 = −0.3151715 /rad.
+/// 7. l_v = (8 − 3) + 0 + 1/4 = 5.25; Cnβ = 0.3151715 × 5.25/10 = 0.1654650 /rad.
+/// 8. z_v = −0 + 1.5/2 + 0 = 0.75 (the MAC of a rectangle at mid span);
+///    Clβ(0°) = −0.3151715 × 0.75/10 = −0.02363786;
+///    Clβ(10°) = −0.3151715 × (0.75 cos 10° − 5.25 sin 10°)/10 = 0.005453952 /rad.
+#[test]
+fn vertical_tail_sideslip_worked_by_hand() {
+    use datcom::methods::lateral::{fin_lateral, Fin};
+    let text = "DIM M
+ $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0, NALPHA=2.0, ALSCHD(1)=0.0, 10.0$
+ $SYNTHS XCG=3.0, ZCG=0.0, XW=2.0, ZW=0.0, ALIW=0.0, XV=8.0, ZV=0.0$
+ $BODY NX=3.0, X(1)=0.0, 5.0, 10.0, R(1)=0.5, 0.5, 0.5$
+ $WGPLNF CHRDR=1.0, CHRDTP=1.0, SSPN=5.0, SSPNE=4.5, SAVSI=0.0, CHSTAT=0.0, TYPE=1.0$
+ $WGSCHR CLALPA(1)=0.1, TOVC=0.12$
+ $VTPLNF CHRDR=1.0, CHRDTP=1.0, SSPN=1.5, SSPNE=1.0, SAVSI=0.0, CHSTAT=0.0, TYPE=1.0$
+ $VTSCHR CLALPA(1)=0.1, TOVC=0.12$
+";
+    let deck = datcom::read_deck(text, "vt_by_hand.dcm");
+    let case = deck.cases.first().expect("one case");
+    let alpha = [0.0, 10.0];
+    let r = fin_lateral(case, 0, &alpha, Fin::VerticalTail).expect("the method runs");
+    // Hand values carry 7 significant digits.
+    const HAND: f64 = 1e-6;
+    let close = |ours: Option<f64>, hand: f64| {
+        let o = ours.expect("a value");
+        assert!(((o - hand) / hand).abs() < HAND, "ours {o}, by hand {hand}");
+    };
+    let t = r.fin_terms.as_ref().expect("terms");
+    assert!((t.effective_aspect_ratio - 2.19).abs() < 1e-12);
+    assert!((t.k - 0.75).abs() < 1e-12);
+    assert!((t.sidewash - 1.0435).abs() < 1e-12);
+    close(Some(t.lift_curve_slope_per_rad), 2.684738);
+    close(r.cyb[0], -0.3151715);
+    close(r.cnb[0], 0.1654650);
+    close(r.clb[0], -0.02363786);
+    close(r.clb[1], 0.005453952);
+    // As the original prints them: CYβ and Cnβ on the first row only.
+    assert_eq!((r.cyb[1], r.cnb[1]), (None, None));
 }

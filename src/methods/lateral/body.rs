@@ -42,6 +42,7 @@ pub fn body_lateral(body: &BodyAlone, case: &Case) -> Lateral {
         clb: vec![Some(0.0); body.alpha_deg.len()],
         wing_terms: None,
         wing_body_terms: None,
+        fin_terms: None,
         warnings,
     }
 }

@@ -29,6 +29,15 @@ pub const KN_STEP_B: &str = "5.2.3.1-8b";
 /// 5.2.3.1-8: K_N, per degree (h/w, step b).
 pub const KN: &str = "5.2.3.1-8c";
 
+/// 5.3.1.1-22a: A_v(B)/A_v (panel taper, b_v/2r₁).
+pub const FIN_ASPECT_IN_BODY: &str = "5.3.1.1-22a";
+/// 5.3.1.1-22b: A_v(HB)/A_v(B) (x/c_v, −z_H/b_v).
+pub const FIN_ASPECT_WITH_TAIL: &str = "5.3.1.1-22b";
+/// 5.3.1.1-22c: K_H (S_H/S_v).
+pub const FIN_TAIL_SIZE: &str = "5.3.1.1-22c";
+/// 5.3.1.1-22d: k of the panel's side force (b_v/2r₁).
+pub const FIN_SIDE_FORCE_K: &str = "5.3.1.1-22d";
+
 /// Every chart the lateral methods read.
 pub const ALL: &[&str] = &[
     SWEEP_ROLL_PER_LIFT,
@@ -42,6 +51,10 @@ pub const ALL: &[&str] = &[
     KN_STEP_A,
     KN_STEP_B,
     KN,
+    FIN_ASPECT_IN_BODY,
+    FIN_ASPECT_WITH_TAIL,
+    FIN_TAIL_SIZE,
+    FIN_SIDE_FORCE_K,
 ];
 
 /// The chart's value at `args`; leaving its data is a warning.

@@ -1,5 +1,5 @@
 //! Static lateral-directional derivatives at subsonic speeds: CYβ, Cnβ and Clβ of the original's
-//! `BODY ALONE` and `WING ALONE CONFIGURATION` pages.
+//! `BODY ALONE`, `WING ALONE`, `WING-BODY` and tail configuration pages.
 //!
 //! Methods (DATCOM sections; the original's routines):
 //! - body alone, DATCOM 5.2.1.1 as the original codes it (M04O04, M06O06): the side force and
@@ -13,8 +13,15 @@
 //!   body's side force with the wing-height factor, the body's yawing moment with K_N, and the
 //!   wing's Clβ terms with K_f, wing height and body diameter; module `wing_body`.
 //!
-//! Not covered: tail and total configurations (5.3.1.x), Mach
-//! numbers above STMACH, low-aspect-ratio wing-body pages ($LARWB).
+//! - horizontal tail alone: the wing method on the tail (`horizontal_tail_lateral`);
+//! - vertical tail and ventral fin, DATCOM 5.3.1.1 (SUBLAT, tail terms): the panel's lift-curve
+//!   slope at its effective aspect ratio in the presence of the body and the horizontal tail,
+//!   the sidewash factor and k, with the arms of the panel's MAC; module `vertical_tail`;
+//! - configurations: the sum of their components (`sum`), CYβ and Cnβ on the first row.
+//!
+//! Not covered: twin vertical panels ($TVTPAN, figures 5.3.1.1-24a to -24c), the body-horizontal
+//! tail terms (the original's BH page), Mach numbers above STMACH, low-aspect-ratio wing-body
+//! pages ($LARWB).
 //!
 //! Axes, signs and units of every output: sideslip β positive nose left (wind from the
 //! right); CY positive to the right, Cl positive right wing down, Cn positive nose right; all
@@ -25,6 +32,7 @@
 
 mod body;
 pub mod figures;
+mod vertical_tail;
 mod wing;
 mod wing_body;
 
@@ -38,6 +46,7 @@ use crate::methods::wing::WingMethodError;
 use crate::results::planform_area_and_mac;
 
 pub use body::body_lateral;
+pub use vertical_tail::{fin_lateral, Fin, FinLateralTerms};
 pub use wing::{wing_lateral, DihedralRoll, RollingMomentTerms, WingLateralTerms};
 pub use wing_body::{wing_body_lateral, WingBodyLateralTerms};
 
@@ -76,6 +85,9 @@ pub enum LateralWarning {
     /// The exposed semispan equals the semispan (no body width at the wing root): the wing
     /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
     NoBodyWidthAtWing,
+    /// The vertical panel's exposed span equals its span (no body depth at the panel): the
+    /// charts of b_v/2r₁ are held at their last nodes (the isolated panel).
+    NoBodyAtFin,
 }
 
 impl fmt::Display for LateralWarning {
@@ -89,6 +101,11 @@ impl fmt::Display for LateralWarning {
             LateralWarning::NoMachZeroLift { reason } => {
                 write!(f, "no wing lift at Mach 0, so no wing CYB: {reason}")
             }
+            LateralWarning::NoBodyAtFin => write!(
+                f,
+                "the vertical panel's SSPNE equals its SSPN (no body depth at the panel): \
+                 figures 5.3.1.1-22a and -22d are held at their last nodes"
+            ),
             LateralWarning::NoBodyWidthAtWing => write!(
                 f,
                 "SSPNE equals SSPN (no body width at the wing root): no wing-body CYB"
@@ -112,6 +129,8 @@ pub struct Lateral {
     pub wing_terms: Option<WingLateralTerms>,
     /// The wing-body method's named terms (wing-body page only).
     pub wing_body_terms: Option<WingBodyLateralTerms>,
+    /// The vertical tail's or ventral fin's named terms.
+    pub fin_terms: Option<FinLateralTerms>,
     pub warnings: Vec<LateralWarning>,
 }
 
@@ -121,6 +140,64 @@ impl From<WingMethodError> for LateralError {
             reason: e.to_string(),
         }
     }
+}
+
+/// The horizontal tail alone: the wing method (DATCOM 5.1.2.1) on the tail's planform, section
+/// and lift `tail` (as the original's SUBLAT with the tail in the wing's place), on the case's
+/// reference area and lateral reference length.
+pub fn horizontal_tail_lateral(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    tail: &crate::methods::tail::HorizontalTailAlone,
+) -> Result<Lateral, LateralError> {
+    let mut proxy =
+        crate::methods::tail::tail_as_wing(case).map_err(|e| LateralError::Geometry {
+            reason: e.to_string(),
+        })?;
+    proxy.reference.span = body::lateral_reference_span(case);
+    wing_lateral(&proxy, condition_index, alpha_deg, &tail.surface)
+}
+
+/// The sum of components' derivatives, as the original forms a configuration's: CYβ and Cnβ
+/// on the first row only, Clβ at every row; none where a component has none.
+pub fn sum(parts: &[&Lateral]) -> Lateral {
+    let first = parts.first();
+    let alpha_deg = first.map(|p| p.alpha_deg.clone()).unwrap_or_default();
+    let n = alpha_deg.len();
+    let total = |f: fn(&Lateral) -> &Vec<Option<f64>>, k: usize| -> Option<f64> {
+        parts
+            .iter()
+            .map(|p| f(p).get(k).copied().flatten())
+            .sum::<Option<f64>>()
+            .and_then(finite)
+    };
+    let mut cyb = vec![None; n];
+    let mut cnb = vec![None; n];
+    if n > 0 {
+        cyb[0] = total(|p| &p.cyb, 0);
+        cnb[0] = total(|p| &p.cnb, 0);
+    }
+    Lateral {
+        clb: (0..n).map(|k| total(|p| &p.clb, k)).collect(),
+        alpha_deg,
+        cyb,
+        cnb,
+        wing_terms: None,
+        wing_body_terms: None,
+        fin_terms: None,
+        warnings: Vec::new(),
+    }
+}
+
+/// The reference area: $OPTINS SREF, else the wing's theoretical area.
+fn reference_area(case: &Case) -> Option<f64> {
+    case.reference.area.or_else(|| {
+        case.wing
+            .as_ref()
+            .and_then(planform_area_and_mac)
+            .map(|w| w.0)
+    })
 }
 
 /// A finite value, else none.

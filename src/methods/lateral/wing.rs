@@ -394,6 +394,7 @@ pub fn wing_lateral(
         cnb,
         clb,
         wing_body_terms: None,
+        fin_terms: None,
         wing_terms: Some(WingLateralTerms {
             aspect_ratio,
             taper,

@@ -56,12 +56,12 @@ pub struct WingBodyLateralTerms {
 
 /// The body side-view quantities the yawing moment method needs (DATCOM 5.2.3.1): side
 /// projected area, heights at l/4 and 3l/4, largest height and width, length.
-struct BodySide {
+pub(super) struct BodySide {
     length: f64,
     side_area: f64,
     height_quarter: f64,
     height_three_quarter: f64,
-    max_height: f64,
+    pub max_height: f64,
     max_width: f64,
 }
 
@@ -78,7 +78,7 @@ fn largest(v: &[f64]) -> Option<f64> {
     v.iter().copied().filter(|v| v.is_finite()).reduce(f64::max)
 }
 
-fn body_side(case: &Case) -> Option<BodySide> {
+pub(super) fn body_side(case: &Case) -> Option<BodySide> {
     let input = case.body.as_ref()?;
     let g = body_geometry(input).ok()?;
     let x0 = *g.x.first()?;
@@ -317,6 +317,7 @@ pub fn wing_body_lateral(
         clb,
         wing_terms: None,
         wing_body_terms: Some(terms),
+        fin_terms: None,
         warnings,
     })
 }

@@ -54,8 +54,8 @@ pub use downwash::{
     DownwashTerms, TailPlacement, VortexSheet, Wake,
 };
 pub use surfaces::{
-    fin_zero_lift_drag, horizontal_tail_alone, low_speed_wing, tail_position, FinZeroLiftDrag,
-    HorizontalTailAlone, LowSpeedWing, TAIL_NOT_APPLICABLE_SLOPE_CHANGE,
+    fin_zero_lift_drag, horizontal_tail_alone, low_speed_wing, tail_as_wing, tail_position,
+    FinZeroLiftDrag, HorizontalTailAlone, LowSpeedWing, TAIL_NOT_APPLICABLE_SLOPE_CHANGE,
 };
 pub use tail_body::{tail_body, TailAtAngle, TailBody, TailBodyInputs};
 

@@ -50,8 +50,9 @@ fn reference(case: &Case) -> (Option<f64>, Option<f64>) {
 }
 
 /// The case with the horizontal tail in the wing's place (planform, section, position and
-/// incidence), on the case's reference area and length.
-fn tail_as_wing(case: &Case) -> Result<Case, TailError> {
+/// incidence), on the case's reference area and length: the wing methods applied to it give
+/// the horizontal tail alone.
+pub fn tail_as_wing(case: &Case) -> Result<Case, TailError> {
     let tail = case
         .horizontal_tail
         .clone()
