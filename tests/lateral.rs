@@ -464,3 +464,127 @@ const SPOTS: common::Spots = &[
 fn lateral_charts_give_their_data_statement_values() {
     common::check_chart_spots(figures::ALL.iter().copied(), SPOTS);
 }
+
+/// The wing-alone sideslip derivatives worked by hand (DATCOM 5.1.2.1 and the original's wing
+/// CYβ, Cnβ), a rectangular wing without body, in metres: chord 2, SSPN 4 (S_w = 16 = S,
+/// b_w = 8 = b, A = 4, taper 1, every sweep 0), uniform dihedral Γ = 5°, no twist; Mach 0.2
+/// (β = √0.96 = 0.9797959). The wing's CL and its Mach-0 lift CL₀ are the wing method's (read
+/// from its results); everything after them by hand.
+///
+/// Clβ (per deg) = [(Clβ/CL)_Λ K_MΛ + (Clβ/CL)_A]·CL + Γ (Clβ/Γ) K_MΓ, area and span ratios 1:
+/// - figure 5.1.2.1-27 at Λc/2 = 0: 0 (DATA Y27) — no sweep term;
+/// - figure 5.1.2.1-28b (taper 1, A 4) = −0.00255 (DATA Y28B, 24th value);
+/// - figure 5.1.2.1-29 (taper 1, Λ 0, A 4) = −0.000167 (DATA Y29, 59th value);
+/// - figure 5.1.2.1-30a (A/cos Λc/2 = 4, M cos Λc/2 = 0.2) = 1.012 (DATA Y30A, 11th value);
+///
+///   so per rad: 57.29578·(−0.00255 CL + 5·(−0.000167)·1.012) = −0.1461042 CL − 0.04841608.
+///
+/// CYβ (per deg) = (A + 4)/(Aβ + 4)·(−0.0001|Γ|)/CL₀·CL (no sweep term):
+/// (8/7.919184)·(−0.0005) = −5.051026E-4, per rad −0.02894025·CL/CL₀.
+///
+/// Cnβ (per deg) = (A + 4)/(Aβ + 4)·((Aβ)² + 4Aβ − 8)/(A² + 4A − 8)·1/(4πA)·CL²/57.29578
+/// (no sweep): 1.010205 × 0.9598639 × 0.01989437 = 0.01929076, so per rad 0.01929076·CL².
+#[test]
+fn wing_sideslip_worked_by_hand() {
+    let text = "DIM M
+ $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0, NALPHA=2.0, ALSCHD(1)=2.0, 6.0$
+ $SYNTHS XCG=0.5, ZCG=0.0, XW=0.0, ZW=0.0, ALIW=0.0$
+ $WGPLNF CHRDR=2.0, CHRDTP=2.0, SSPN=4.0, SSPNE=4.0, SAVSI=0.0, CHSTAT=0.0, TYPE=1.0,
+   DHDADI=5.0$
+ $WGSCHR CLALPA(1)=0.1, TOVC=0.12, DELTAY=2.0, XOVC=0.3, LERI=0.01, CLMAX(1)=1.4,
+   CLMAXL=1.4$
+";
+    let deck = datcom::read_deck(text, "wing_by_hand.dcm");
+    let case = deck.cases.first().expect("one case");
+    let alpha = [2.0, 6.0];
+    let w = wing_alone(case, 0, &alpha).expect("the wing method runs");
+    let r = wing_lateral(case, 0, &alpha, &w).expect("the lateral method runs");
+    let cl0 = &r.wing_terms.as_ref().expect("terms").cl_mach_zero;
+    // Hand values carry 7 significant digits.
+    const HAND: f64 = 2e-6;
+    for k in 0..alpha.len() {
+        let cl = w.cl[k].expect("CL");
+        let close = |ours: Option<f64>, hand: f64, what: &str| {
+            let o = ours.expect("a value");
+            assert!(
+                ((o - hand) / hand).abs() < HAND,
+                "{what} at {}°: ours {o}, by hand {hand}",
+                alpha[k]
+            );
+        };
+        close(r.clb[k], -0.1461042 * cl - 0.04841608, "CLB");
+        close(r.cyb[k], -0.02894025 * cl / cl0[k].expect("CL0"), "CYB");
+        close(r.cnb[k], 0.01929076 * cl * cl, "CNB");
+    }
+}
+
+/// The wing-body and body-alone sideslip derivatives worked by hand (DATCOM 5.2.2.1, 5.2.3.1 as the original
+/// applies them), in metres: a cylinder body of radius 0.5 and length 10 (S_Bs = 2·10·0.5 = 10,
+/// heights 1 at l/4 and 3l/4, h/w = 1); a rectangular wing, chord 1, SSPN 4, SSPNE 3.5 (S = 8,
+/// b = 8, A = 8, taper 1, no sweep, dihedral or twist) at ZW = 0.25, ALIW = 0; XCG = 2;
+/// RNNUB 1E6 per metre; Mach 0.2. The wing-body CL and the body's CLα are the methods' (read
+/// from their results); everything after them by hand.
+///
+/// CYβ: z_w = −ZW = −0.25, d = 2(SSPN − SSPNE) = 1, 2z_w/d = −0.5 < 0, so the factor is
+/// 1 − 0.85·(−0.5) = 1.425 and CYβ = −1.425·CLα_B (per rad, as CLα_B).
+///
+/// Cnβ: l²/S_Bs = 100/10 = 10, x_m/l = 2/10 = 0.2: figure 5.2.3.1-8 step a = 0.74 (DATA Y58A,
+/// 5th value); step b at √(h1/h2) = 1: 0.74 (the curve at 1.0 is y = x: DATA Y58B 0, 3, 6);
+/// K_N at h/w = 1: −0.00048 + (0.00559 + 0.00048)·0.74/6 = 2.686333E-4 (DATA Y58C 7th, 8th);
+/// K_Rl = 1 + ln(1E-6·1E6·10)/4.86 = 1.473783;
+/// Cnβ = −2.686333E-4 × 1.473783 × 10 × 10/(8 × 8) = −6.186050E-4 per deg = −0.03544346 /rad.
+///
+/// Clβ: (CL_WB·(Clβ/CL)_A + ΔClβ,zw)·b_w/b with no sweep, dihedral or twist term:
+/// figure 5.1.2.1-28b (taper 1, A 8) = −0.00097 (DATA Y28B, last value);
+/// ΔClβ,zw = 1.2·z_w·d·√A/(57.29578·2·SSPN²) = 1.2·(−0.25)·1·2.828427/1833.465 = −4.628003E-4;
+/// per rad: −0.05557691·CL_WB − 0.02651650.
+#[test]
+fn wing_body_sideslip_worked_by_hand() {
+    let text = "DIM M
+ $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0, NALPHA=2.0, ALSCHD(1)=2.0, 6.0,
+   RNNUB(1)=1.0E6$
+ $SYNTHS XCG=2.0, ZCG=0.0, XW=4.0, ZW=0.25, ALIW=0.0$
+ $BODY NX=3.0, X(1)=0.0, 5.0, 10.0, R(1)=0.5, 0.5, 0.5$
+ $WGPLNF CHRDR=1.0, CHRDTP=1.0, SSPN=4.0, SSPNE=3.5, SAVSI=0.0, CHSTAT=0.0, TYPE=1.0$
+ $WGSCHR CLALPA(1)=0.1, TOVC=0.12, DELTAY=2.0, XOVC=0.3, LERI=0.01, CLMAX(1)=1.4,
+   CLMAXL=1.4$
+";
+    let deck = datcom::read_deck(text, "wing_body_by_hand.dcm");
+    let case = deck.cases.first().expect("one case");
+    let alpha = [2.0, 6.0];
+    let w = wing_alone(case, 0, &alpha).expect("the wing method runs");
+    let wb = wing_body(case, 0, &alpha).expect("the wing-body method runs");
+    let r = wing_body_lateral(case, 0, &alpha, &w, &wb).expect("the lateral method runs");
+    // Hand values carry 7 significant digits.
+    const HAND: f64 = 2e-6;
+    let close = |ours: Option<f64>, hand: f64, what: &str| {
+        let o = ours.expect("a value");
+        assert!(
+            ((o - hand) / hand).abs() < HAND,
+            "{what}: ours {o}, by hand {hand}"
+        );
+    };
+    let body_cla = wb.terms.body.cla_per_rad[0].expect("body CLA");
+    close(r.cyb[0], -1.425 * body_cla, "CYB");
+    close(r.cnb[0], -0.03544346, "CNB");
+    for k in 0..alpha.len() {
+        let cl = wb.cl[k].expect("CL");
+        close(r.clb[k], -0.05557691 * cl - 0.02651650, "CLB");
+    }
+    // The body alone (DATCOM 5.2.1.1 as the original forms it), at every row: CYβ = −CLα,B,
+    // Cnβ = −(c̄/b)·CMα,B = −(1/8)·CMα,B (c̄ the wing's MAC, 1), Clβ = 0.
+    let body = body_lateral(&wb.terms.body, case);
+    for k in 0..alpha.len() {
+        close(
+            body.cyb[k],
+            -wb.terms.body.cla_per_rad[k].expect("CLA"),
+            "body CYB",
+        );
+        close(
+            body.cnb[k],
+            -wb.terms.body.cma_per_rad[k].expect("CMA") / 8.0,
+            "body CNB",
+        );
+        assert_eq!(body.clb[k], Some(0.0));
+    }
+}
