@@ -10,9 +10,7 @@ use super::{finite, wing_inputs, Lateral, LateralError, LateralWarning, WingInpu
 use crate::case::units::from_si;
 use crate::case::Case;
 use crate::deck::schema::Dimension;
-use crate::methods::wing::{
-    computed_wing_section, wing_alone_with_section, Sweep, WingAlone, WingPlanform, WingType,
-};
+use crate::methods::wing::{mach_zero_wing, Sweep, WingAlone, WingPlanform, WingType};
 
 /// Degrees per radian: the charts and the original's equations are per degree.
 pub(super) const DEG_PER_RAD: f64 = 180.0 / PI;
@@ -564,10 +562,8 @@ pub(super) fn dihedral_break(
     })
 }
 
-/// The wing's CL at Mach 0 at each angle (the original's CLMCH0): the wing-alone method at
-/// M = 0 with the first Mach number's section lift-curve slope and, for the section maximum
-/// lift, CLMAXL in place of the first CLMAX, at this condition's Reynolds number. None, with a
-/// warning, when it cannot be computed.
+/// The wing's CL at Mach 0 at each angle (the original's CLMCH0, see [`mach_zero_wing`]):
+/// none, with a warning, when it cannot be computed.
 fn mach_zero_lift(
     case: &Case,
     condition_index: usize,
@@ -575,40 +571,8 @@ fn mach_zero_lift(
     warnings: &mut Vec<LateralWarning>,
 ) -> Vec<Option<f64>> {
     let n = alpha_deg.len();
-    let (Some(first), Some(this)) = (
-        case.conditions.first(),
-        case.conditions.get(condition_index),
-    ) else {
-        return vec![None; n];
-    };
-    let mut at_rest = case.clone();
-    let mut condition = first.clone();
-    condition.mach = 0.0;
-    condition.mach_index = 0;
-    condition.reynolds_per_length = this.reynolds_per_length;
-    at_rest.conditions = vec![condition];
-    if let Some(section) = at_rest.sections.get_mut("WING") {
-        let low_aspect = section.scalars.get("CLMAXL").copied();
-        if let Some(clmax) = section.per_mach.get_mut("CLMAX") {
-            if let Some(first) = clmax.first_mut() {
-                *first = low_aspect.unwrap_or(f64::NAN);
-            }
-        }
-    }
-    let computed = match computed_wing_section(case).transpose() {
-        Ok(c) => c.map(|mut c| {
-            c.per_mach.truncate(1);
-            c
-        }),
-        Err(e) => {
-            warnings.push(LateralWarning::NoMachZeroLift {
-                reason: e.to_string(),
-            });
-            return vec![None; n];
-        }
-    };
-    match wing_alone_with_section(&at_rest, 0, alpha_deg, computed.as_ref()) {
-        Ok(w) if w.cl.len() == n => w.cl,
+    match mach_zero_wing(case, condition_index, alpha_deg) {
+        Ok(low) if low.wing.cl.len() == n => low.wing.cl,
         Ok(_) => {
             warnings.push(LateralWarning::NoMachZeroLift {
                 reason: "the lift curve is not computed".into(),

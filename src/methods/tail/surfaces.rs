@@ -11,11 +11,11 @@ use super::{TailError, TailWarning};
 use crate::case::{Case, Planform, Synthesis};
 use crate::deck::cards::Surface;
 use crate::geometry::{planform as planform_geometry, Span};
-use crate::methods::body::{roughness_height, subsonic_limit};
+use crate::methods::body::roughness_height;
 use crate::methods::section::{section_characteristics, surface_section};
 use crate::methods::wing::{
-    wing_alone, wing_alone_with_section, wing_zero_lift_drag, Chords, DragInputs,
-    MaxThicknessStations, PanelTerms, WingAlone, WingPlanform, WingType, WingZeroLiftDrag,
+    mach_zero_wing, wing_alone, wing_zero_lift_drag, Chords, DragInputs, MaxThicknessStations,
+    PanelTerms, WingAlone, WingMethodError, WingPlanform, WingType, WingZeroLiftDrag,
     NONLINEAR_ASPECT_LIMIT,
 };
 use crate::results::planform_area_and_mac;
@@ -201,70 +201,22 @@ pub struct LowSpeedWing {
     pub transonic_slope: bool,
 }
 
-/// TSMACH when not given, and its limits (as the original's INPUTB).
-const DEFAULT_TSMACH: f64 = 1.4;
-const TSMACH_RANGE: (f64, f64) = (1.01, 1.4);
-
-/// See [`LowSpeedWing`]. None when the wing has no maximum lift at low speed (no CLMAXL and
-/// no computed section) or no angle of maximum lift.
+/// See [`LowSpeedWing`] and [`mach_zero_wing`]. None when the wing has no maximum lift at low
+/// speed (no CLMAXL and no computed section) or no angle of maximum lift.
 pub fn low_speed_wing(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
 ) -> Result<Option<LowSpeedWing>, TailError> {
-    let condition = case
-        .conditions
-        .get(condition_index)
-        .ok_or(TailError::NoCondition {
-            index: condition_index,
-        })?;
-    let stmach = subsonic_limit(case);
-    let tsmach = case
-        .flight
-        .as_ref()
-        .and_then(|f| f.tsmach)
-        .unwrap_or(DEFAULT_TSMACH)
-        .clamp(TSMACH_RANGE.0, TSMACH_RANGE.1);
-    let transonic_slope = case
-        .conditions
-        .iter()
-        .any(|c| c.mach > stmach && c.mach < tsmach);
-    let mut proxy = case.clone();
-    let wing_name = Surface::Wing.name();
-    let user = case.sections.get(wing_name);
-    let scalar = |n: &str| user.and_then(|u| u.scalars.get(n).copied());
-    if let Some(s) = proxy.sections.get_mut(wing_name) {
-        match scalar("CLMAXL") {
-            Some(l) => {
-                s.per_mach.insert("CLMAX".into(), vec![l]);
-            }
-            None => {
-                s.per_mach.remove("CLMAX");
-            }
-        }
-        if transonic_slope {
-            if let Some(c) = scalar("CLAMO") {
-                s.per_mach.insert("CLALPA".into(), vec![c]);
-            }
-        }
-    }
-    let mut low = condition.clone();
-    low.mach = 0.0;
-    low.mach_index = 0;
-    proxy.conditions = vec![low];
-    let computed = crate::methods::wing::computed_wing_section(case)
-        .transpose()
-        .map_err(TailError::Wing)?;
-    let computed = computed.map(|mut c| {
-        c.per_mach.truncate(1);
-        c
-    });
-    let w = wing_alone_with_section(&proxy, 0, alpha_deg, computed.as_ref())
-        .map_err(TailError::Wing)?;
+    let low = mach_zero_wing(case, condition_index, alpha_deg).map_err(|e| match e {
+        WingMethodError::NoCondition { index } => TailError::NoCondition { index },
+        e => TailError::Wing(e),
+    })?;
+    let w = &low.wing;
     Ok(w.terms.max_lift.alpha_deg.map(|a| LowSpeedWing {
         zero_lift_alpha_deg: w.terms.zero_lift_angle.wing_deg,
         max_lift_alpha_deg: a,
-        transonic_slope,
+        transonic_slope: low.transonic_slope,
     }))
 }
 

@@ -35,6 +35,7 @@
 mod drag;
 pub mod figures;
 mod lift;
+mod low_speed;
 mod pitching_moment;
 mod planform;
 mod section_inputs;
@@ -64,6 +65,7 @@ pub use lift::{
     LiftCurveInputs, LiftCurveSlope, LowAspectRatioFlow, MaxLift, MaxLiftInputs, NonlinearLift,
     PanelLift,
 };
+pub use low_speed::{mach_zero_wing, MachZeroWing};
 pub use pitching_moment::{
     aerodynamic_centre, linear_moment_applies, pitching_moment, zero_lift_moment, MomentInputs,
     NonlinearCentre, PitchingMoment, ZeroLiftMoment,
