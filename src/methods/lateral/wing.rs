@@ -354,7 +354,13 @@ pub fn wing_lateral(
             let centre = if cn == 0.0 {
                 0.0
             } else {
-                6.0 * (wing.cm[k]? / cn / chord_in_deck_units) * sin_q.abs() / a
+                // The moment the method computed, also where the page prints NA (the
+                // original keeps the value behind its NA).
+                let cm = wing.cm[k].or_else(|| {
+                    let m = wing.terms.pitching_moment.as_ref()?;
+                    m.cm.get(k).copied().filter(|v| v.is_finite())
+                })?;
+                6.0 * (cm / cn / chord_in_deck_units) * sin_q.abs() / a
             };
             let bracket = 1.0 / (4.0 * PI * a)
                 - tan_q.abs() / (PI * a * (a + 4.0 * cos_q))
