@@ -466,13 +466,22 @@ pub fn run_case(case: &Case) -> CaseResults {
         // with BUILD the parts of the build-up the methods so far compute.
         let wb = case.wing.is_some() && case.body.is_some();
         let (ht, vt) = (case.horizontal_tail.is_some(), case.vertical_tail.is_some());
+        // With a ventral fin the full configuration (the original's WING-BODY-HORIZONTAL
+        // TAIL-VERTICAL TAIL-VENTRAL FIN page) takes the place of WING_BODY_VT_HT: the same
+        // totals with the fin's drag and sideslip terms.
+        let vf = case.ventral_fin.is_some();
+        let full = if vf {
+            configuration.as_str()
+        } else {
+            WING_BODY_VT_HT
+        };
         let parts: [(&str, bool); 6] = [
             (BODY_ALONE, case.body.is_some()),
             (WING_ALONE, case.wing.is_some()),
             (WING_BODY, wb),
             (WING_BODY_HT, wb && ht),
             (WING_BODY_VT, wb && vt),
-            (WING_BODY_VT_HT, wb && ht && vt),
+            (full, wb && ht && (vt || vf)),
         ];
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;

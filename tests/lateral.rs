@@ -34,6 +34,7 @@ const FLOORS_WING_BODY: [usize; 3] = [30, 30, 398];
 const FLOORS_WING_BODY_HT: [usize; 3] = [4, 4, 40];
 const FLOORS_WING_BODY_VT: [usize; 3] = [4, 4, 51];
 const FLOORS_WING_BODY_VT_HT: [usize; 3] = [20, 20, 215];
+const FLOORS_WING_BODY_HT_VT_VF: [usize; 3] = [8, 8, 134];
 
 #[derive(Clone, Copy, PartialEq)]
 enum Config {
@@ -208,6 +209,7 @@ fn lateral_derivatives_agree_with_the_original() {
             "WING-BODY-HORIZONTAL TAIL CONFIGURATION",
             "WING-BODY-VERTICAL TAIL CONFIGURATION",
             "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION",
+            "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-VENTRAL FIN CONFIGURATION",
         ],
     ) else {
         return;
@@ -249,6 +251,10 @@ fn lateral_derivatives_agree_with_the_original() {
             (
                 Config::Tails("WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION"),
                 FLOORS_WING_BODY_VT_HT,
+            ),
+            (
+                Config::Tails("WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-VENTRAL FIN CONFIGURATION"),
+                FLOORS_WING_BODY_HT_VT_VF,
             ),
         ] {
             let t = run(&decks, config);
