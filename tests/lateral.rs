@@ -226,6 +226,8 @@ fn lateral_derivatives_agree_with_the_original() {
             false,
         ),
     ] {
+        // Matched and total numbers over every page.
+        let mut all = ([0usize; 3], [0usize; 3]);
         let decks: Vec<(String, Deck, String)> = sources
             .iter()
             .map(|(n, d, l)| {
@@ -258,6 +260,10 @@ fn lateral_derivatives_agree_with_the_original() {
             ),
         ] {
             let t = run(&decks, config);
+            for j in 0..3 {
+                all.0[j] += t.matched[j];
+                all.1[j] += t.total[j];
+            }
             eprintln!("{title}: {}", config.page());
             for (j, c) in COLUMNS.iter().enumerate() {
                 eprintln!("  {c}: {} / {}", t.matched[j], t.total[j]);
@@ -277,6 +283,15 @@ fn lateral_derivatives_agree_with_the_original() {
                     );
                 }
             }
+        }
+        eprintln!("{title}: ALL PAGES");
+        for (j, c) in COLUMNS.iter().enumerate() {
+            eprintln!(
+                "  {c}: {} / {} ({:.1} %)",
+                all.0[j],
+                all.1[j],
+                100.0 * all.0[j] as f64 / all.1[j].max(1) as f64
+            );
         }
     }
 }
