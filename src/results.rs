@@ -39,7 +39,15 @@ pub struct DynamicDerivatives {
     pub cnp: Vec<Option<f64>>,
     pub cnr: Vec<Option<f64>>,
     pub clr: Vec<Option<f64>>,
+    /// Columns (`CLQ`, `CMQ`, `CLAD`, `CMAD`, `CLP`, `CYP`, `CNP`, `CNR`, `CLR`) for which DATCOM
+    /// has no method for this configuration: the original prints NDM on their first row.
+    pub no_method: Vec<&'static str>,
 }
+
+/// The dynamic-derivative columns, in the order of the page.
+pub const DYNAMIC_NAMES: [&str; 9] = [
+    "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
+];
 
 fn nones(n: usize) -> Vec<Option<f64>> {
     vec![None; n]
@@ -76,7 +84,23 @@ impl DynamicDerivatives {
             cnp: nones(n),
             cnr: nones(n),
             clr: nones(n),
+            no_method: Vec::new(),
         }
+    }
+
+    /// The columns in page order, with their names.
+    pub fn columns(&self) -> [(&'static str, &Vec<Option<f64>>); 9] {
+        [
+            (DYNAMIC_NAMES[0], &self.clq),
+            (DYNAMIC_NAMES[1], &self.cmq),
+            (DYNAMIC_NAMES[2], &self.clad),
+            (DYNAMIC_NAMES[3], &self.cmad),
+            (DYNAMIC_NAMES[4], &self.clp),
+            (DYNAMIC_NAMES[5], &self.cyp),
+            (DYNAMIC_NAMES[6], &self.cnp),
+            (DYNAMIC_NAMES[7], &self.cnr),
+            (DYNAMIC_NAMES[8], &self.clr),
+        ]
     }
 }
 

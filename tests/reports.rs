@@ -157,10 +157,14 @@ fn for006_pages_read_back_to_our_numbers() {
                 {
                     *col = val(20 + k);
                 }
+                // A column without a DATCOM method: NDM in the first row.
+                d.no_method = vec!["CLAD"];
+                d.clad = vec![None; n];
             }
         }
     }
     let listing = datcom::report::for006::to_string(&r);
+    assert!(listing.contains("NDM PRINTED WHEN NO DATCOM METHODS EXIST"));
     let back = legacy::read_listing(&listing);
     assert_eq!(back.len(), 1);
     assert_eq!(back[0].conditions.len(), 4);
@@ -181,4 +185,8 @@ fn for006_pages_read_back_to_our_numbers() {
     let dy = b.dynamics.as_ref().unwrap();
     let clr = dy.column("CLR").unwrap();
     assert!((clr[0].unwrap() - c.dynamic.as_ref().unwrap().clr[0].unwrap()).abs() < 1e-6);
+    assert_eq!(dy.no_method(), vec!["CLAD".to_string()]);
+    // The neighbours of the NDM field are read in their own columns.
+    let cmad = dy.column("CMAD").unwrap();
+    assert!((cmad[0].unwrap() - c.dynamic.as_ref().unwrap().cmad[0].unwrap()).abs() < 1e-6);
 }

@@ -91,11 +91,13 @@ pub fn to_string(results: &Results) -> String {
                 ];
                 match &c.dynamic {
                     Some(y) => {
-                        for col in [
-                            &y.clq, &y.cmq, &y.clad, &y.cmad, &y.clp, &y.cyp, &y.cnp, &y.cnr,
-                            &y.clr,
-                        ] {
-                            row.push(dd(col));
+                        for (name, col) in y.columns() {
+                            // No DATCOM method: `NDM` in the first row, as the original.
+                            if i == 0 && y.no_method.contains(&name) {
+                                row.push("NDM".into());
+                            } else {
+                                row.push(dd(col));
+                            }
                         }
                     }
                     None => row.extend(std::iter::repeat_n(String::new(), 9)),

@@ -110,16 +110,21 @@ fn dynamic_page(out: &mut String, case: &CaseResults, c: &ConditionResults) {
     );
     let _ = writeln!(out, "0");
     let w = widths(&DYNAMIC_COLUMNS);
-    let cols = [
-        &d.clq, &d.cmq, &d.clad, &d.cmad, &d.clp, &d.cyp, &d.cnp, &d.cnr, &d.clr,
-    ];
     for (i, a) in c.alpha_deg.iter().enumerate() {
         let mut row = fortran_f(*a, 2, w[0]);
-        for (k, col) in cols.iter().enumerate() {
+        for (k, (name, col)) in d.columns().iter().enumerate() {
+            if i == 0 && d.no_method.contains(name) {
+                // The original's NDM: three letters four places left of the field's end.
+                row.push_str(&format!("{:>width$}    ", "NDM", width = w[k + 1] - 4));
+                continue;
+            }
             let v = derivative_view(col.get(i).copied().flatten(), u);
             row.push_str(&field(v, w[k + 1], 0));
         }
         let _ = writeln!(out, "{}", row.trim_end());
+    }
+    if !d.no_method.is_empty() {
+        let _ = writeln!(out, "0*** NDM PRINTED WHEN NO DATCOM METHODS EXIST");
     }
 }
 

@@ -55,6 +55,8 @@ pub struct DynamicJson {
     pub cnr: Vec<Option<f64>>,
     #[serde(rename = "CLR")]
     pub clr: Vec<Option<f64>>,
+    /// Columns for which DATCOM has no method for this configuration (the original's NDM).
+    pub no_method: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -194,6 +196,7 @@ fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
             cnp: d(&y.cnp, u),
             cnr: d(&y.cnr, u),
             clr: d(&y.clr, u),
+            no_method: y.no_method.iter().map(|n| n.to_string()).collect(),
         }),
     }
 }
@@ -337,6 +340,10 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                                     cnp: listed_column(d, "CNP"),
                                     cnr: listed_column(d, "CNR"),
                                     clr: listed_column(d, "CLR"),
+                                    no_method: d
+                                        .as_ref()
+                                        .map(super::legacy::Table::no_method)
+                                        .unwrap_or_default(),
                                 }),
                             }
                         })

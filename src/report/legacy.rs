@@ -167,6 +167,19 @@ impl Table {
             .find(|(n, _)| n == name)
             .map(|(_, v)| v.as_slice())
     }
+
+    /// The columns printed `NDM` (no DATCOM method) in the first row, in page order.
+    pub fn no_method(&self) -> Vec<String> {
+        let Some(first) = self.texts.first() else {
+            return Vec::new();
+        };
+        self.columns
+            .iter()
+            .zip(first)
+            .filter(|(_, text)| text.trim() == "NDM")
+            .map(|((name, _), _)| name.clone())
+            .collect()
+    }
 }
 
 fn read_table(lines: &[&str], start: usize, columns: &[(&str, usize)]) -> Table {
