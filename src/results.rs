@@ -534,7 +534,9 @@ pub fn run_case(case: &Case) -> CaseResults {
                     configuration: part.to_string(),
                     alpha_deg: f.alpha_deg.clone(),
                     static_coefficients: StaticCoefficients::empty(n),
-                    dynamic: None,
+                    // With DAMP the original prints a dynamic page after each configuration's
+                    // static page.
+                    dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
                 };
                 match computed {
                     Ok((s, mut w)) => {
@@ -544,7 +546,6 @@ pub fn run_case(case: &Case) -> CaseResults {
                     Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach)),
                 }
                 if own {
-                    entry.dynamic = case.cards.damp.then(|| DynamicDerivatives::empty(n));
                     own_computed = true;
                 }
                 conditions.push(entry);
