@@ -95,7 +95,9 @@ fn static_page(out: &mut String, case: &CaseResults, c: &ConditionResults) {
     }
 }
 
-fn dynamic_page(out: &mut String, case: &CaseResults, c: &ConditionResults) {
+/// The DYNAMIC DERIVATIVES page of a condition (nothing without DAMP); the text report prints
+/// the same page.
+pub(crate) fn dynamic_page(out: &mut String, case: &CaseResults, c: &ConditionResults) {
     let Some(d) = &c.dynamic else { return };
     header(out, "DYNAMIC DERIVATIVES", case, c);
     let u = case.deriv;

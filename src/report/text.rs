@@ -158,6 +158,7 @@ pub fn to_string(results: &Results) -> String {
             s.push_str(&flight_conditions_block(case, c));
             s.push_str(&table(case, c));
             s.push('\n');
+            super::for006::dynamic_page(&mut s, case, c);
         }
         for w in &case.warnings {
             let _ = writeln!(s, " warning (case {}): {w}", case.number);
