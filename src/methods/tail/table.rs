@@ -46,27 +46,34 @@ pub(crate) fn read(
     above: End,
 ) -> Option<(f64, f64)> {
     let n = x.len().min(y.len());
-    let y: Vec<f64> = y[..n].iter().copied().collect::<Option<Vec<f64>>>()?;
+    // Every value present (checked once; the readings below index without allocating).
+    if y[..n].iter().any(Option::is_none) {
+        return None;
+    }
+    let y = |i: usize| y[i].unwrap_or(f64::NAN);
     let x = &x[..n];
     if !at.is_finite() {
         return None;
     }
+    // The parabola through the three nodes from `w`.
+    let parabola_from =
+        |w: usize| parabola(&[x[w], x[w + 1], x[w + 2]], &[y(w), y(w + 1), y(w + 2)], at);
     match n {
         0 => return None,
-        1 => return Some((y[0], 0.0)),
+        1 => return Some((y(0), 0.0)),
         2 => {
-            let s = chord(x[0], x[1], y[0], y[1])?;
-            return Some((y[0] + s * (at - x[0]), s));
+            let s = chord(x[0], x[1], y(0), y(1))?;
+            return Some((y(0) + s * (at - x[0]), s));
         }
         _ => {}
     }
     if at > x[0] && at < x[n - 1] {
         let k = (0..n - 1).rev().find(|&k| at >= x[k]).unwrap_or(0);
         let w = k.max(1) - 1;
-        let (_, slope) = parabola(&x[w..w + 3], &y[w..w + 3], at)?;
+        let (_, slope) = parabola_from(w)?;
         let (a, b) = if at < x[1] { (0, 1) } else { (k, k + 1) };
-        let s = chord(x[a], x[b], y[a], y[b])?;
-        return Some((y[a] + s * (at - x[a]), slope));
+        let s = chord(x[a], x[b], y(a), y(b))?;
+        return Some((y(a) + s * (at - x[a]), slope));
     }
     let upper = at >= x[n - 1];
     let (w, end, rule) = if upper {
@@ -77,15 +84,15 @@ pub(crate) fn read(
     match rule {
         End::Linear => {
             let s = if upper {
-                chord(x[n - 2], x[n - 1], y[n - 2], y[n - 1])?
+                chord(x[n - 2], x[n - 1], y(n - 2), y(n - 1))?
             } else {
-                chord(x[0], x[1], y[0], y[1])?
+                chord(x[0], x[1], y(0), y(1))?
             };
-            Some((y[end] + s * (at - x[end]), s))
+            Some((y(end) + s * (at - x[end]), s))
         }
         End::Hold => {
-            let (_, slope) = parabola(&x[w..w + 3], &y[w..w + 3], at)?;
-            Some((y[end], slope))
+            let (_, slope) = parabola_from(w)?;
+            Some((y(end), slope))
         }
     }
 }
