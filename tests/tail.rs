@@ -71,7 +71,7 @@ const FLOORS: &[(&str, &str, &str, &str, usize)] = &[
     ("flight", "all", "WBV", "CM", 34),
     ("flight", "all", "WBV", "CN", 30),
     ("flight", "all", "WBV", "CA", 33),
-    ("flight", "all", "WBV", "XCP", 32),
+    ("flight", "all", "WBV", "XCP", 31),
     ("flight", "all", "WBV", "CLA", 29),
     ("flight", "all", "WBV", "CMA", 28),
     ("flight", "all", "WBHV", "CD", 152),

@@ -13,6 +13,10 @@ use crate::methods::body::{skin_friction_coefficient, BodyMethodError, BodyWarni
 /// Form factor of DATCOM 4.1.5.1 equation 4.1.5.1-a: 1 + L (t/c) + 100 (t/c)⁴, with L = 1.2
 /// when the maximum thickness is at or aft of 30 % chord, else 2.0.
 const THICKNESS_LOCATION_SPLIT: f64 = 0.30;
+/// A computed section's station of maximum thickness is a single-precision number: a NACA
+/// 4-digit section's 0.3 comes out as 0.29999998. Within this of the split it counts as at 30 %
+/// (the original, and DATCOM's intent: the 4-digit sections take L = 1.2).
+const THICKNESS_LOCATION_TOLERANCE: f64 = 1e-6;
 const L_AFT: f64 = 1.2;
 const L_FORWARD: f64 = 2.0;
 const FOURTH_POWER_FACTOR: f64 = 100.0;
@@ -106,7 +110,9 @@ fn panel_friction(
             warnings.push(WingWarning::Chart(c));
         }
     }
-    let l = if max_thickness_x.unwrap_or(0.0) >= THICKNESS_LOCATION_SPLIT {
+    let l = if max_thickness_x.unwrap_or(0.0)
+        >= THICKNESS_LOCATION_SPLIT - THICKNESS_LOCATION_TOLERANCE
+    {
         L_AFT
     } else {
         L_FORWARD
