@@ -88,6 +88,33 @@ impl DynamicDerivatives {
         }
     }
 
+    /// The block of a method's result: a column without a method is left empty and named in
+    /// `no_method`.
+    pub fn from_columns(d: &crate::methods::dynamic::Dynamic) -> Self {
+        use crate::methods::dynamic::Column;
+        let n = d.alpha_deg.len();
+        let mut out = Self::empty(n);
+        let cols = d.columns();
+        let targets = [
+            &mut out.clq,
+            &mut out.cmq,
+            &mut out.clad,
+            &mut out.cmad,
+            &mut out.clp,
+            &mut out.cyp,
+            &mut out.cnp,
+            &mut out.cnr,
+            &mut out.clr,
+        ];
+        for ((name, col), target) in cols.iter().zip(targets) {
+            match col {
+                Column::NoMethod => out.no_method.push(name),
+                Column::Rows(r) => *target = r.clone(),
+            }
+        }
+        out
+    }
+
     /// The columns in page order, with their names.
     pub fn columns(&self) -> [(&'static str, &Vec<Option<f64>>); 9] {
         [
@@ -406,6 +433,94 @@ fn wing_body_coefficients(
     Ok((s, warnings))
 }
 
+/// The dynamic derivatives of `part` at condition `index` (DAMP), with what could not be
+/// computed said in the warnings; a configuration without methods gives an empty block.
+fn dynamic_derivatives(
+    case: &Case,
+    index: usize,
+    alpha_deg: &[f64],
+    part: &str,
+    section: Option<&SectionCharacteristics>,
+    totals: Option<&Result<crate::methods::tail::ConfigurationTotals, String>>,
+) -> (DynamicDerivatives, Vec<String>) {
+    use crate::methods::dynamic::{self as dy, Dynamic, TailConfiguration};
+    let n = alpha_deg.len();
+    let label = format!(
+        "Mach {}: dynamic derivatives",
+        case.conditions.get(index).map_or(0.0, |c| c.mach)
+    );
+    let computed: Result<Dynamic, String> = (|| {
+        let body = |b: &crate::methods::body::BodyAlone| {
+            dy::body_dynamic(case, b, alpha_deg).map_err(|e| e.to_string())
+        };
+        let wing = |w: &crate::methods::wing::WingAlone| {
+            dy::wing_dynamic(case, index, alpha_deg, w)
+                .map(|r| r.0)
+                .map_err(|e| e.to_string())
+        };
+        let wing_body = |wb: &crate::methods::wing_body::WingBody| -> Result<Dynamic, String> {
+            Ok(dy::wing_body_dynamic(
+                &wing(&wb.terms.wing)?,
+                &body(&wb.terms.body)?,
+                wb,
+            ))
+        };
+        match part {
+            BODY_ALONE => {
+                let input = case.body.as_ref().ok_or("the case has no body")?;
+                let g = crate::geometry::body(input).map_err(|e| e.to_string())?;
+                let condition = case.conditions.get(index).ok_or("no condition")?;
+                let b = crate::methods::body::body_alone(case, &g, condition, alpha_deg)
+                    .map_err(|e| e.to_string())?;
+                body(&b)
+            }
+            WING_ALONE => {
+                let w =
+                    crate::methods::wing::wing_alone_with_section(case, index, alpha_deg, section)
+                        .map_err(|e| e.to_string())?;
+                wing(&w)
+            }
+            WING_BODY => {
+                let wb = crate::methods::wing_body::wing_body_with_section(
+                    case, index, alpha_deg, section,
+                )
+                .map_err(|e| e.to_string())?;
+                wing_body(&wb)
+            }
+            _ => {
+                let t = totals
+                    .ok_or("no configuration totals")?
+                    .as_ref()
+                    .map_err(Clone::clone)?;
+                let wb = wing_body(&t.terms.wing_body)?;
+                let tail = match &t.terms.horizontal_tail {
+                    Some(h) => Some(
+                        dy::horizontal_tail_dynamic(case, index, alpha_deg, h)
+                            .map(|r| r.0)
+                            .map_err(|e| e.to_string())?,
+                    ),
+                    None => None,
+                };
+                let which = match part {
+                    WING_BODY_HT => TailConfiguration::WingBodyHorizontalTail,
+                    WING_BODY_VT => TailConfiguration::WingBodyVerticalTail,
+                    _ => TailConfiguration::WingBodyVerticalTailHorizontalTail,
+                };
+                dy::wing_body_tail_dynamic(case, index, which, &wb, tail.as_ref(), t)
+                    .map(|c| c.total)
+                    .map_err(|e| e.to_string())
+            }
+        }
+    })();
+    match computed {
+        Ok(d) => {
+            let warnings = d.warnings.iter().map(|w| format!("{label}: {w}")).collect();
+            (DynamicDerivatives::from_columns(&d), warnings)
+        }
+        Err(e) => (DynamicDerivatives::empty(n), vec![format!("{label}: {e}")]),
+    }
+}
+
 /// Configuration name as the original prints it, from the components present.
 pub fn configuration_name(case: &Case) -> String {
     let body = case.body.is_some();
@@ -536,8 +651,20 @@ pub fn run_case(case: &Case) -> CaseResults {
                     static_coefficients: StaticCoefficients::empty(n),
                     // With DAMP the original prints a dynamic page after each configuration's
                     // static page.
-                    dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
+                    dynamic: None,
                 };
+                if case.cards.damp {
+                    let (d, mut w) = dynamic_derivatives(
+                        case,
+                        index,
+                        &f.alpha_deg,
+                        part,
+                        wing_section,
+                        totals.as_ref(),
+                    );
+                    entry.dynamic = Some(d);
+                    warnings.append(&mut w);
+                }
                 match computed {
                     Ok((s, mut w)) => {
                         entry.static_coefficients = s;

@@ -2,6 +2,7 @@
 //! function over geometry and flight conditions that returns its named terms and warnings.
 
 pub mod body;
+pub mod dynamic;
 pub mod lateral;
 pub mod section;
 pub mod tail;

@@ -190,6 +190,11 @@ pub fn sum(parts: &[&Lateral]) -> Lateral {
     }
 }
 
+/// The lateral reference length b: $OPTINS BLREF, else the wing's span 2·SSPN.
+pub fn lateral_reference_length(case: &Case) -> Option<f64> {
+    body::lateral_reference_span(case)
+}
+
 /// The reference area: $OPTINS SREF, else the wing's theoretical area.
 fn reference_area(case: &Case) -> Option<f64> {
     case.reference.area.or_else(|| {

@@ -33,7 +33,7 @@
 mod downwash;
 pub mod figures;
 mod surfaces;
-mod table;
+pub(crate) mod table;
 mod tail_body;
 
 use std::fmt;

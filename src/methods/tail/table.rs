@@ -7,10 +7,12 @@
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum End {
     /// The end value; the slope of the end parabola (TBFUNX LEX ≤ 0). (The original's LEX = 2,
-    /// the end parabola's value, is not needed here.)
+    /// the end parabola's value, is [`End::Quadratic`].)
     Hold,
     /// The chord through the two end points, value and slope (LEX = 1).
     Linear,
+    /// The parabola through the three end points, value and slope (LEX = 2).
+    Quadratic,
 }
 
 /// Value and slope at `at` of the parabola through three points.
@@ -94,6 +96,7 @@ pub(crate) fn read(
             let (_, slope) = parabola_from(w)?;
             Some((y(end), slope))
         }
+        End::Quadratic => parabola_from(w),
     }
 }
 
