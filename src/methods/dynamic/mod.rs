@@ -90,7 +90,7 @@ impl fmt::Display for DynamicWarning {
             }
             DynamicWarning::NoAlphaDotMethod => write!(
                 f,
-                "CLAD and CMAD: DATCOM's α̇ method is for triangular planforms with βA ≤ 4 only (NDM)"
+                "the wing's (or tail's) own CLAD and CMAD: DATCOM's α̇ method is for triangular planforms with βA ≤ 4 only (NDM; a configuration with a horizontal tail still has the tail's downwash-lag terms)"
             ),
             DynamicWarning::BodyTooWide { fraction } => write!(
                 f,
