@@ -433,6 +433,153 @@ fn wing_body_coefficients(
     Ok((s, warnings))
 }
 
+/// The original's configuration lines for the tails alone and with the body alone (BUILD).
+pub const HORIZONTAL_TAIL: &str = "HORIZONTAL TAIL CONFIGURATION";
+pub const VERTICAL_TAIL: &str = "VERTICAL TAIL CONFIGURATION";
+pub const BODY_HT: &str = "BODY-HORIZONTAL TAIL CONFIGURATION";
+pub const BODY_VT: &str = "BODY-VERTICAL TAIL CONFIGURATION";
+
+/// The horizontal tail alone at one condition: the wing methods on the tail (DATCOM 4.1.3 to
+/// 4.1.5 and 5.1.2.1 on the tail's planform, section, position and incidence, on the case's
+/// reference dimensions), or the reason there are none.
+fn horizontal_tail_coefficients(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    let t = crate::methods::tail::horizontal_tail_alone(case, condition_index, alpha_deg)
+        .map_err(|e| format!("horizontal tail alone: {e}"))?;
+    let mut warnings: Vec<String> = t
+        .surface
+        .warnings
+        .iter()
+        .map(|x| format!("horizontal tail alone: {x}"))
+        .collect();
+    let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
+        alpha_deg,
+        t.surface.cd.clone(),
+        t.surface.cl.clone(),
+        t.cm.clone(),
+        t.cla_per_rad.clone(),
+        t.cma_per_rad.clone(),
+    ));
+    let lateral =
+        crate::methods::lateral::horizontal_tail_lateral(case, condition_index, alpha_deg, &t)
+            .map_err(|e| e.to_string());
+    add_sideslip(&mut s, &mut warnings, "horizontal tail alone", lateral);
+    Ok((s, warnings))
+}
+
+/// The vertical tail alone at one condition: its zero-lift drag (DATCOM 4.1.5.1) on the first
+/// row, no lift, moment or slopes (0 on the first row, as the original prints them), and its
+/// sideslip derivatives (DATCOM 5.3.1.1, with the sidewash of its configuration).
+fn vertical_tail_coefficients(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    use crate::methods::lateral::{fin_lateral, Fin};
+    let mut tail_warnings = Vec::new();
+    let drag = crate::methods::tail::fin_zero_lift_drag(
+        case,
+        condition_index,
+        crate::deck::cards::Surface::VerticalTail,
+        &mut tail_warnings,
+    )
+    .map_err(|e| format!("vertical tail alone: {e}"))?;
+    let mut warnings: Vec<String> = tail_warnings
+        .iter()
+        .map(|w| format!("vertical tail alone: {w}"))
+        .collect();
+    let n = alpha_deg.len();
+    let mut s = StaticCoefficients::empty(n);
+    if n > 0 {
+        s.cd[0] = drag.map(|d| d.drag.total);
+        for column in [&mut s.cl, &mut s.cm, &mut s.cn, &mut s.cla, &mut s.cma] {
+            column[0] = Some(0.0);
+        }
+    }
+    let lateral =
+        fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail).map_err(|e| e.to_string());
+    add_sideslip(&mut s, &mut warnings, "vertical tail alone", lateral);
+    Ok((s, warnings))
+}
+
+/// The body with the vertical tail at one condition: the body alone (DATCOM 4.2) with the
+/// tail's zero-lift drag added to CD (CN, CA, XCP resolved again), and the body's and the
+/// tail's sideslip derivatives summed (5.2.1.1, 5.3.1.1).
+fn body_vertical_tail_coefficients(
+    case: &Case,
+    condition: &FlightCondition,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    use crate::methods::lateral::{self, fin_lateral, Fin};
+    let (body, mut warnings) = body_alone_coefficients(case, condition, alpha_deg)?;
+    let mut tail_warnings = Vec::new();
+    let drag = crate::methods::tail::fin_zero_lift_drag(
+        case,
+        condition_index,
+        crate::deck::cards::Surface::VerticalTail,
+        &mut tail_warnings,
+    )
+    .map_err(|e| format!("body-vertical tail: {e}"))?
+    .map(|d| d.drag.total);
+    warnings.extend(
+        tail_warnings
+            .iter()
+            .map(|w| format!("body-vertical tail: {w}")),
+    );
+    let cd: Vec<Option<f64>> = body.cd.iter().map(|c| Some((*c)? + drag?)).collect();
+    let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
+        alpha_deg,
+        cd,
+        body.cl.clone(),
+        body.cm.clone(),
+        body.cla.clone(),
+        body.cma.clone(),
+    ));
+    let body_sideslip = lateral::Lateral {
+        alpha_deg: alpha_deg.to_vec(),
+        cyb: body.cyb,
+        cnb: body.cnb,
+        clb: body.clb,
+        wing_terms: None,
+        wing_body_terms: None,
+        fin_terms: None,
+        warnings: Vec::new(),
+    };
+    let total = fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail)
+        .map(|fin| {
+            let mut total = lateral::sum(&[&body_sideslip, &fin]);
+            total.warnings = fin.warnings;
+            total
+        })
+        .map_err(|e| e.to_string());
+    add_sideslip(&mut s, &mut warnings, "body-vertical tail", total);
+    Ok((s, warnings))
+}
+
+/// The body with the horizontal tail at one condition: the wing-body methods (DATCOM 4.3,
+/// 5.2.2.1, 5.2.3.1) with the horizontal tail in the wing's place (planform, section,
+/// position, incidence), on the case's reference dimensions, as the original forms this page.
+fn body_horizontal_tail_coefficients(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    let mut proxy = crate::methods::tail::tail_as_wing(case)
+        .map_err(|e| format!("body-horizontal tail: {e}"))?;
+    proxy.reference.span = crate::methods::lateral::lateral_reference_length(case);
+    let section = crate::methods::wing::computed_wing_section(&proxy)
+        .transpose()
+        .map_err(|e| format!("body-horizontal tail: {e}"))?;
+    let (s, warnings) =
+        wing_body_coefficients(&proxy, condition_index, alpha_deg, section.as_ref())?;
+    let label = |w: String| w.replacen("wing-body", "body-horizontal tail", 1);
+    Ok((s, warnings.into_iter().map(label).collect()))
+}
+
 /// The dynamic derivatives of `part` at condition `index` (DAMP), with what could not be
 /// computed said in the warnings; a configuration without methods gives an empty block.
 fn dynamic_derivatives(
@@ -465,14 +612,62 @@ fn dynamic_derivatives(
                 wb,
             ))
         };
+        let body_alone = || -> Result<Dynamic, String> {
+            let input = case.body.as_ref().ok_or("the case has no body")?;
+            let g = crate::geometry::body(input).map_err(|e| e.to_string())?;
+            let condition = case.conditions.get(index).ok_or("no condition")?;
+            let b = crate::methods::body::body_alone(case, &g, condition, alpha_deg)
+                .map_err(|e| e.to_string())?;
+            body(&b)
+        };
+        let horizontal_tail = || -> Result<Dynamic, String> {
+            let h = crate::methods::tail::horizontal_tail_alone(case, index, alpha_deg)
+                .map_err(|e| e.to_string())?;
+            dy::horizontal_tail_dynamic(case, index, alpha_deg, &h)
+                .map(|r| r.0)
+                .map_err(|e| e.to_string())
+        };
         match part {
-            BODY_ALONE => {
-                let input = case.body.as_ref().ok_or("the case has no body")?;
-                let g = crate::geometry::body(input).map_err(|e| e.to_string())?;
-                let condition = case.conditions.get(index).ok_or("no condition")?;
-                let b = crate::methods::body::body_alone(case, &g, condition, alpha_deg)
+            BODY_ALONE => body_alone(),
+            HORIZONTAL_TAIL => horizontal_tail(),
+            VERTICAL_TAIL => {
+                // The vertical tail's roll and yaw terms (DATCOM 7.4.2, 7.4.3); the original
+                // prints 0 for its pitch-rate and α̇ derivatives.
+                let mut d = dy::fin_dynamic(
+                    case,
+                    index,
+                    alpha_deg,
+                    crate::methods::lateral::Fin::VerticalTail,
+                )
+                .map_err(|e| e.to_string())?;
+                for column in [&mut d.clq, &mut d.cmq, &mut d.clad, &mut d.cmad] {
+                    *column = dy::Column::first(n, Some(0.0));
+                }
+                Ok(d)
+            }
+            BODY_VT => {
+                // The body's pitch-rate and α̇ derivatives; no roll or yaw method (NDM), as
+                // the original.
+                let b = body_alone()?;
+                let mut d = Dynamic::no_method(alpha_deg);
+                (d.clq, d.cmq, d.clad, d.cmad, d.warnings) =
+                    (b.clq, b.cmq, b.clad, b.cmad, b.warnings);
+                Ok(d)
+            }
+            BODY_HT => {
+                // The wing-body's rule (DATCOM 7.3) with the tail in the wing's place; its
+                // roll damping is the tail's, no yaw or side-force method (NDM), as the
+                // original.
+                let mut proxy =
+                    crate::methods::tail::tail_as_wing(case).map_err(|e| e.to_string())?;
+                proxy.reference.span = crate::methods::lateral::lateral_reference_length(case);
+                let wb = crate::methods::wing_body::wing_body(&proxy, index, alpha_deg)
                     .map_err(|e| e.to_string())?;
-                body(&b)
+                let mut d = dy::wing_body_dynamic(&horizontal_tail()?, &body_alone()?, &wb);
+                for column in [&mut d.cyp, &mut d.cnp, &mut d.cnr, &mut d.clr] {
+                    *column = dy::Column::NoMethod;
+                }
+                Ok(d)
             }
             WING_ALONE => {
                 let w =
@@ -614,10 +809,16 @@ pub fn run_case(case: &Case) -> CaseResults {
         } else {
             WING_BODY_VT_HT
         };
-        let parts: [(&str, bool); 6] = [
-            (BODY_ALONE, case.body.is_some()),
+        // In the original's page order.
+        let body = case.body.is_some();
+        let parts: [(&str, bool); 10] = [
+            (BODY_ALONE, body),
             (WING_ALONE, case.wing.is_some()),
+            (HORIZONTAL_TAIL, ht),
+            (VERTICAL_TAIL, vt),
             (WING_BODY, wb),
+            (BODY_HT, body && ht),
+            (BODY_VT, body && vt),
             (WING_BODY_HT, wb && ht),
             (WING_BODY_VT, wb && vt),
             (full, wb && ht && (vt || vf)),
@@ -636,6 +837,10 @@ pub fn run_case(case: &Case) -> CaseResults {
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
                     WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg, wing_section),
                     WING_BODY => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),
+                    HORIZONTAL_TAIL => horizontal_tail_coefficients(case, index, &f.alpha_deg),
+                    VERTICAL_TAIL => vertical_tail_coefficients(case, index, &f.alpha_deg),
+                    BODY_HT => body_horizontal_tail_coefficients(case, index, &f.alpha_deg),
+                    BODY_VT => body_vertical_tail_coefficients(case, &c, index, &f.alpha_deg),
                     _ => {
                         let t = totals.get_or_insert_with(|| {
                             crate::methods::tail::configuration(case, index, &f.alpha_deg)

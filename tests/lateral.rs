@@ -35,6 +35,10 @@ const FLOORS_WING_BODY_HT: [usize; 3] = [4, 4, 40];
 const FLOORS_WING_BODY_VT: [usize; 3] = [4, 4, 51];
 const FLOORS_WING_BODY_VT_HT: [usize; 3] = [20, 20, 215];
 const FLOORS_WING_BODY_HT_VT_VF: [usize; 3] = [8, 8, 134];
+const FLOORS_HT: [usize; 3] = [40, 40, 40];
+const FLOORS_VT: [usize; 3] = [3, 3, 31];
+const FLOORS_BODY_HT: [usize; 3] = [3, 4, 13];
+const FLOORS_BODY_VT: [usize; 3] = [3, 3, 31];
 
 #[derive(Clone, Copy, PartialEq)]
 enum Config {
@@ -173,7 +177,9 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
             let mut our_run = None;
             for listed_case in legacy::read_listing(listing) {
                 for listed in &listed_case.conditions {
-                    if !listed.configuration.contains(config.page()) || listed.statics.is_none() {
+                    let page = listed.configuration.trim();
+                    let page = page.strip_prefix("DATCOM ").unwrap_or(page);
+                    if page != config.page() || listed.statics.is_none() {
                         continue;
                     }
                     let Some(mach) = listed.row.field("mach").and_then(|f| f.value) else {
@@ -210,6 +216,10 @@ fn lateral_derivatives_agree_with_the_original() {
             "WING-BODY-VERTICAL TAIL CONFIGURATION",
             "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION",
             "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-VENTRAL FIN CONFIGURATION",
+            "HORIZONTAL TAIL CONFIGURATION",
+            "VERTICAL TAIL CONFIGURATION",
+            "BODY-HORIZONTAL TAIL CONFIGURATION",
+            "BODY-VERTICAL TAIL CONFIGURATION",
         ],
     ) else {
         return;
@@ -257,6 +267,16 @@ fn lateral_derivatives_agree_with_the_original() {
             (
                 Config::Tails("WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-VENTRAL FIN CONFIGURATION"),
                 FLOORS_WING_BODY_HT_VT_VF,
+            ),
+            (Config::Tails("HORIZONTAL TAIL CONFIGURATION"), FLOORS_HT),
+            (Config::Tails("VERTICAL TAIL CONFIGURATION"), FLOORS_VT),
+            (
+                Config::Tails("BODY-HORIZONTAL TAIL CONFIGURATION"),
+                FLOORS_BODY_HT,
+            ),
+            (
+                Config::Tails("BODY-VERTICAL TAIL CONFIGURATION"),
+                FLOORS_BODY_VT,
             ),
         ] {
             let t = run(&decks, config);

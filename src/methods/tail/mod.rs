@@ -158,7 +158,7 @@ pub struct Coefficients {
 
 impl Coefficients {
     /// CD, CL, CM, CLA, CMA given; CN, CA resolved at the schedule angle and XCP = CM/CN.
-    fn resolved(
+    pub fn resolved(
         alpha_deg: &[f64],
         cd: Vec<Option<f64>>,
         cl: Vec<Option<f64>>,
