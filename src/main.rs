@@ -50,6 +50,14 @@ enum CompareFormat {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum ReportFormat {
+    Text,
+    Markdown,
+    Csv,
+    Json,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum RunFormat {
     Text,
     Json,
@@ -99,6 +107,21 @@ enum Command {
         reference: PathBuf,
         #[arg(long, value_enum, default_value = "text")]
         format: CompareFormat,
+        /// Reynolds number of the section methods for decks without RNNUB (see `run`).
+        #[arg(long, value_enum, default_value = "flight")]
+        reynolds: ReynoldsRule,
+    },
+    /// Percentage errors of a deck's derivatives against reference values: a reference file
+    /// (TOML: hand calculation, published table; docs/validation.md) gives, per derivative,
+    /// ours, the reference, the error, the unit and the DATCOM method, with mean and max
+    /// absolute error per family; a listing of the original (for006.dat) or a JSON of `run`
+    /// gives the agreement per coefficient, number by number, as `compare`.
+    Report {
+        deck: PathBuf,
+        #[arg(long, value_name = "REF")]
+        reference: PathBuf,
+        #[arg(long, value_enum, default_value = "text")]
+        format: ReportFormat,
         /// Reynolds number of the section methods for decks without RNNUB (see `run`).
         #[arg(long, value_enum, default_value = "flight")]
         reynolds: ReynoldsRule,
@@ -231,6 +254,99 @@ fn compare(
     ExitCode::SUCCESS
 }
 
+/// Agreement rows as a Markdown or CSV table.
+fn agreement_table(rows: &[datcom::report::compare::ColumnAgreement], markdown: bool) -> String {
+    let mut out = if markdown {
+        String::from(
+            "| coefficient | agreeing | compared | missing | fraction |\n|---|---|---|---|---|\n",
+        )
+    } else {
+        String::from("coefficient,agreeing,compared,missing,fraction\n")
+    };
+    for r in rows {
+        let cells = [
+            r.coefficient.clone(),
+            r.agreeing.to_string(),
+            r.compared.to_string(),
+            r.missing.to_string(),
+            format!("{:.4}", r.fraction()),
+        ];
+        out.push_str(&if markdown {
+            format!("| {} |\n", cells.join(" | "))
+        } else {
+            format!("{}\n", cells.join(","))
+        });
+    }
+    out
+}
+
+fn report(deck: &Path, reference: &Path, format: ReportFormat, reynolds: ReynoldsRule) -> ExitCode {
+    use datcom::report::percent_error as pe;
+    let text = match std::fs::read(reference) {
+        Ok(b) => String::from_utf8_lossy(&b).into_owned(),
+        Err(e) => {
+            eprintln!("datcom-rs: cannot read {}: {e}", reference.display());
+            return ExitCode::from(2);
+        }
+    };
+    let is_results = text.trim_start().starts_with('{')
+        || text.contains("AUTOMATED STABILITY AND CONTROL METHODS");
+    let out = if is_results {
+        // A listing or a result: agreement per coefficient, as `compare`.
+        let (a, b) = match (
+            results_json(deck, reynolds),
+            results_json(reference, reynolds),
+        ) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(c), _) | (_, Err(c)) => return c,
+        };
+        let rows = datcom::report::compare::compare(&a, &b);
+        match format {
+            ReportFormat::Text => datcom::report::compare::to_text(&rows),
+            ReportFormat::Markdown => agreement_table(&rows, true),
+            ReportFormat::Csv => agreement_table(&rows, false),
+            ReportFormat::Json => serde_json::to_string_pretty(&rows).unwrap_or_default(),
+        }
+    } else {
+        let r = match pe::Reference::from_toml(&text, &reference.display().to_string()) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("datcom-rs: {e}");
+                return ExitCode::from(2);
+            }
+        };
+        let d = match load(deck) {
+            Ok(d) => d.with_section_reynolds(reynolds.rule()),
+            Err(code) => return code,
+        };
+        print_diagnostics(&d, false, &mut std::io::stderr().lock());
+        if d.has_errors() {
+            eprintln!(
+                "datcom-rs: {} has {} error(s)",
+                deck.display(),
+                d.error_count()
+            );
+            return ExitCode::from(1);
+        }
+        match pe::report(&datcom::run(&d), &r) {
+            Ok(rep) => match format {
+                ReportFormat::Text => pe::to_text(&rep),
+                ReportFormat::Markdown => pe::to_markdown(&rep),
+                ReportFormat::Csv => pe::to_csv(&rep),
+                ReportFormat::Json => pe::to_json(&rep) + "\n",
+            },
+            Err(e) => {
+                eprintln!("datcom-rs: {}: {e}", reference.display());
+                return ExitCode::from(2);
+            }
+        }
+    };
+    if std::io::stdout().lock().write_all(out.as_bytes()).is_err() {
+        return ExitCode::from(2);
+    }
+    ExitCode::SUCCESS
+}
+
 fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
     let name = namelist.to_ascii_uppercase();
     if !["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"].contains(&name.as_str()) {
@@ -297,6 +413,12 @@ fn main() -> ExitCode {
             format,
             reynolds,
         } => compare(&ours, &reference, format, reynolds),
+        Command::Report {
+            deck,
+            reference,
+            format,
+            reynolds,
+        } => report(&deck, &reference, format, reynolds),
         Command::Airfoil {
             file,
             namelist,

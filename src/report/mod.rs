@@ -9,6 +9,7 @@ pub mod csv;
 pub mod for006;
 pub mod json;
 pub mod legacy;
+pub mod percent_error;
 pub mod text;
 
 use crate::case::units::from_si;
