@@ -24,6 +24,7 @@ pub mod case;
 pub mod charts;
 pub mod conditions;
 pub mod deck;
+pub mod discrepancy;
 pub mod error;
 pub mod geometry;
 pub mod methods;

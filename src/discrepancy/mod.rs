@@ -1,0 +1,681 @@
+//! The discrepancy workflow: compare a prediction with measurements, find where they disagree,
+//! name the missing physical effect from a catalogue, add it to the model and show the gap
+//! shrink (docs/discrepancy.md).
+//!
+//! - [`effects`]: the catalogue of named effects, each a parametric change of CL, CD, Cm.
+//! - [`data`]: the CSV tables (measurements, predictions) and a noise estimate.
+//! - [`fit`]: weighted least squares (Levenberg–Marquardt) with parameter covariance.
+//! - [`analyse_static`]: residuals with their significance, stepwise selection of effects by
+//!   the Bayesian information criterion, fit with 95 % intervals, held-out validation.
+//! - [`flight`]: a longitudinal flight simulation driven by the prediction, and output-error
+//!   fitting of the same effects to a recorded time history.
+//! - [`synthetic`]: the generators of synthetic data the tests use.
+
+pub mod data;
+pub mod effects;
+pub mod fit;
+pub mod flight;
+pub mod prediction;
+pub mod synthetic;
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+use thiserror::Error;
+
+pub use data::Measurement;
+pub use effects::{apply, Coefficient, Coefficients, EffectId, Prediction};
+
+/// What went wrong.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum DiscrepancyError {
+    #[error("{file}:{line}: cannot read the CSV: {reason}")]
+    Csv {
+        file: String,
+        line: usize,
+        reason: String,
+    },
+    #[error("{file}: no column {column} (the header has: {found})")]
+    MissingColumn {
+        file: String,
+        column: String,
+        found: String,
+    },
+    #[error("{file}:{line}: column {column}: expected a finite number, found {text:?}")]
+    BadNumber {
+        file: String,
+        line: usize,
+        column: String,
+        text: String,
+    },
+    #[error("{reason}")]
+    Invalid { reason: String },
+    #[error("the model gives no prediction: {reason}")]
+    NoPrediction { reason: String },
+    #[error("no measured point lies within the prediction's angles of attack ({from} to {to} deg) with beta 0 and CL, CD or Cm")]
+    NoOverlap { from: f64, to: f64 },
+}
+
+/// How the selection decides.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Options {
+    /// An effect is added when it lowers the Bayesian information criterion
+    /// BIC = n ln(RSS/n) + k ln n by more than this (10: "very strong" evidence on the scale
+    /// of Kass and Raftery, 1995; keeps false alarms on noise-only data near 0.1 % per
+    /// candidate).
+    pub min_bic_drop: f64,
+    /// Two candidates whose BICs differ by less than this, both passing, are confounded:
+    /// reported as such and not chosen between (2: "not worth more than a bare mention").
+    pub confound_bic: f64,
+    /// Every k-th point (in alpha order) is held out of the selection and fit, to validate.
+    pub holdout_every: usize,
+    /// At most this many effects.
+    pub max_effects: usize,
+    /// Rows with |beta| at most this (deg) count as beta = 0 for the longitudinal fit.
+    pub beta_zero_deg: f64,
+    /// The candidates (default: the whole catalogue).
+    pub candidates: Vec<EffectId>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            min_bic_drop: 10.0,
+            confound_bic: 2.0,
+            holdout_every: 4,
+            max_effects: 4,
+            beta_zero_deg: 0.5,
+            candidates: EffectId::ALL.to_vec(),
+        }
+    }
+}
+
+/// Why an effect was added.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Evidence {
+    /// Fall of BIC when the effect was added (on the training points).
+    pub bic_drop: f64,
+    /// Partial F statistic of the added parameters: ((RSS₀ − RSS₁)/k)/(RSS₁/(n − p)).
+    pub partial_f: f64,
+    pub rss_before: f64,
+    pub rss_after: f64,
+    /// Weighted residuals in the fit.
+    pub residuals: usize,
+}
+
+/// A chosen effect with its parameters fitted on every point and their 95 % intervals.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChosenEffect {
+    pub id: EffectId,
+    pub parameters: BTreeMap<String, f64>,
+    pub ci95: BTreeMap<String, [f64; 2]>,
+    pub evidence: Evidence,
+    pub description: &'static str,
+}
+
+/// The residuals of one coefficient over one range of angles.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ResidualBin {
+    pub coefficient: String,
+    pub alpha_from_deg: f64,
+    pub alpha_to_deg: f64,
+    pub points: usize,
+    /// Mean of measured − predicted.
+    pub mean: f64,
+    pub rms: f64,
+    /// The noise standard deviation used.
+    pub sigma: f64,
+    /// mean/(σ/√n).
+    pub z: f64,
+    /// |z| > [`SIGNIFICANT_Z`].
+    pub significant: bool,
+}
+
+/// A bin's mean residual is significant beyond this many standard errors (3: a 0.3 % chance
+/// for noise alone).
+pub const SIGNIFICANT_Z: f64 = 3.0;
+
+/// The result of the workflow (its JSON is the CLI's `--json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Analysis {
+    /// In the order they were added; empty when nothing is missing.
+    pub effects: Vec<ChosenEffect>,
+    /// RMS of measured − predicted per coefficient, over every point, before and after.
+    pub rms_before: BTreeMap<String, f64>,
+    pub rms_after: BTreeMap<String, f64>,
+    /// Groups of effects that explain the data equally well (not chosen between).
+    pub confounded: Vec<Vec<EffectId>>,
+    /// RMS on the held-out points, prediction and corrected model (fitted without them).
+    pub validation_rms_before: BTreeMap<String, f64>,
+    pub validation_rms_after: BTreeMap<String, f64>,
+    pub residuals: Vec<ResidualBin>,
+    /// Noise standard deviation per coefficient, and where it came from.
+    pub sigma: BTreeMap<String, f64>,
+    pub sigma_source: BTreeMap<String, String>,
+    pub criterion: &'static str,
+    pub warnings: Vec<String>,
+}
+
+/// One longitudinal point of the fit.
+#[derive(Debug, Clone, PartialEq)]
+struct Point {
+    alpha_deg: f64,
+    /// Measured CL, CD, Cm (none where not measured).
+    measured: [Option<f64>; 3],
+}
+
+const LONGITUDINAL: [&str; 3] = ["CL", "CD", "Cm"];
+
+fn pick(c: &Coefficients, k: usize) -> f64 {
+    match k {
+        0 => c.cl,
+        1 => c.cd,
+        _ => c.cm,
+    }
+}
+
+/// Weighted residuals (model − measured)/σ of `points` under `effects`.
+fn static_residuals(
+    prediction: &Prediction,
+    points: &[&Point],
+    sigma: &[f64; 3],
+    effects: &[(EffectId, &[f64])],
+) -> Option<Vec<f64>> {
+    let mut r = Vec::with_capacity(points.len() * 3);
+    for p in points {
+        let c = apply(prediction, effects, p.alpha_deg)?;
+        for (k, s) in sigma.iter().enumerate() {
+            if let Some(m) = p.measured[k] {
+                r.push((pick(&c, k) - m) / s);
+            }
+        }
+    }
+    Some(r)
+}
+
+/// A model: effects with their parameters.
+pub type Model = Vec<(EffectId, Vec<f64>)>;
+
+fn as_refs(model: &Model) -> Vec<(EffectId, &[f64])> {
+    model.iter().map(|(e, p)| (*e, p.as_slice())).collect()
+}
+
+/// Splits a flat parameter vector over the effects of `ids`.
+fn unflatten(ids: &[EffectId], flat: &[f64]) -> Model {
+    let mut out = Vec::with_capacity(ids.len());
+    let mut k = 0;
+    for id in ids {
+        let n = id.parameters().len();
+        out.push((*id, flat[k..k + n].to_vec()));
+        k += n;
+    }
+    out
+}
+
+/// Parameters fitted in every model besides the effects' (e.g. a flight's initial state),
+/// with their starting values and typical sizes; none for static data.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub(crate) struct Nuisance {
+    pub start: Vec<f64>,
+    pub scales: Vec<f64>,
+}
+
+/// The fitted model of `ids` from `start` (the nuisance parameters, then the effects' flat),
+/// with its fit (parameters in the same order).
+pub(crate) fn fit_model<F>(
+    residuals: &F,
+    ids: &[EffectId],
+    start: &[f64],
+    nuisance: &Nuisance,
+) -> Option<fit::Fit>
+where
+    F: Fn(&Model, &[f64]) -> Option<Vec<f64>>,
+{
+    let nn = nuisance.scales.len();
+    let scales: Vec<f64> = nuisance
+        .scales
+        .iter()
+        .copied()
+        .chain(ids.iter().flat_map(|e| e.scales()))
+        .collect();
+    fit::levenberg_marquardt(
+        |flat: &[f64]| residuals(&unflatten(ids, &flat[nn..]), &flat[..nn]),
+        start,
+        &scales,
+    )
+}
+
+/// Starting points for a candidate's own parameters: nominal, or for the stall onset a few
+/// onset angles over the upper part of the data.
+fn starts(id: EffectId, alphas: &[f64]) -> Vec<Vec<f64>> {
+    match id {
+        EffectId::StallOnset => {
+            let (lo, hi) = alphas
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                    (a.min(*x), b.max(*x))
+                });
+            (1..=5)
+                .map(|k| vec![lo + (hi - lo) * (0.3 + 0.12 * f64::from(k)), 0.001, 0.0])
+                .collect()
+        }
+        EffectId::LiftSlopeScale | EffectId::TailEfficiency => vec![vec![0.95]],
+        EffectId::ZeroLiftShift => vec![vec![0.5]],
+        _ => vec![id.nominal()],
+    }
+}
+
+/// Whether a fitted effect is physically admissible on data spanning `alphas`: a stall onset
+/// inside the upper half of the measured angles with a loss (not a gain) of lift, a positive
+/// lift-slope scale and a non-negative tail efficiency. Outside, the effect's shape is only a
+/// generic curve fit (a "stall" below the data is a quadratic in alpha) and it is not offered.
+fn admissible(id: EffectId, p: &[f64], alphas: &[f64]) -> bool {
+    let (lo, hi) = alphas
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(*x), b.max(*x))
+        });
+    match id {
+        EffectId::StallOnset => p[0] >= 0.5 * (lo + hi) && p[0] < hi && p[1] > 0.0,
+        EffectId::LiftSlopeScale => p[0] > 0.0,
+        EffectId::TailEfficiency => p[0] >= 0.0,
+        _ => true,
+    }
+}
+
+/// The outcome of a stepwise selection.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Selection {
+    pub model: Model,
+    /// The nuisance parameters fitted with the model.
+    pub nuisance: Vec<f64>,
+    pub evidence: Vec<Evidence>,
+    pub confounded: Vec<Vec<EffectId>>,
+}
+
+fn bic(rss: f64, n: usize, k: usize) -> f64 {
+    let n = n as f64;
+    n * (rss.max(f64::MIN_POSITIVE) / n).ln() + k as f64 * n.ln()
+}
+
+/// Forward stepwise selection by BIC (see [`Options`]): at each step every remaining
+/// candidate is fitted together with the effects already chosen (all parameters free); the
+/// one with the lowest BIC is added when it lowers BIC by more than `min_bic_drop`, unless a
+/// runner-up passes too and lies within `confound_bic` of it: then both are reported as
+/// confounded and the selection stops.
+pub(crate) fn stepwise<F>(
+    residuals: &F,
+    candidates: &[EffectId],
+    alphas: &[f64],
+    nuisance: &Nuisance,
+    options: &Options,
+) -> Option<Selection>
+where
+    F: Fn(&Model, &[f64]) -> Option<Vec<f64>>,
+{
+    let nn = nuisance.scales.len();
+    let mut model: Model = Vec::new();
+    let base_fit = fit_model(residuals, &[], &nuisance.start, nuisance)?;
+    let mut current_nuisance = base_fit.parameters.clone();
+    let n = base_fit.residual_count;
+    let mut rss = base_fit.chi_square;
+    let mut current_bic = bic(rss, n, 0);
+    let mut evidence = Vec::new();
+    let mut confounded = Vec::new();
+    while model.len() < options.max_effects {
+        let ids: Vec<EffectId> = model.iter().map(|(e, _)| *e).collect();
+        let base: Vec<f64> = model.iter().flat_map(|(_, p)| p.clone()).collect();
+        let mut trials: Vec<(EffectId, fit::Fit)> = Vec::new();
+        for c in candidates.iter().filter(|c| !ids.contains(c)) {
+            let mut with: Vec<EffectId> = ids.clone();
+            with.push(*c);
+            let best = starts(*c, alphas)
+                .into_iter()
+                .filter_map(|s| {
+                    let start: Vec<f64> = current_nuisance
+                        .iter()
+                        .chain(&base)
+                        .copied()
+                        .chain(s)
+                        .collect();
+                    fit_model(residuals, &with, &start, nuisance)
+                })
+                .filter(|f| {
+                    unflatten(&with, &f.parameters[nn..])
+                        .iter()
+                        .all(|(id, p)| admissible(*id, p, alphas))
+                })
+                .min_by(|a, b| a.chi_square.total_cmp(&b.chi_square));
+            if let Some(f) = best {
+                trials.push((*c, f));
+            }
+        }
+        let k_of = |id: EffectId| -> usize {
+            ids.iter().map(|e| e.parameters().len()).sum::<usize>() + id.parameters().len()
+        };
+        let mut scored: Vec<(f64, EffectId, fit::Fit)> = trials
+            .into_iter()
+            .map(|(id, f)| (bic(f.chi_square, n, k_of(id)), id, f))
+            .collect();
+        scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let Some((best_bic, best_id, best_fit)) = scored.first().cloned() else {
+            break;
+        };
+        if current_bic - best_bic <= options.min_bic_drop {
+            break;
+        }
+        if let Some((runner_bic, runner_id, _)) = scored.get(1) {
+            if current_bic - runner_bic > options.min_bic_drop
+                && runner_bic - best_bic < options.confound_bic
+            {
+                confounded.push(vec![best_id, *runner_id]);
+                break;
+            }
+        }
+        let p_total = best_fit.parameters.len() - nn;
+        let k_new = best_id.parameters().len();
+        let rss_after = best_fit.chi_square;
+        let partial_f = if n > p_total && rss_after > 0.0 {
+            ((rss - rss_after) / k_new as f64) / (rss_after / (n - p_total) as f64)
+        } else {
+            f64::INFINITY
+        };
+        evidence.push(Evidence {
+            bic_drop: current_bic - best_bic,
+            partial_f: if partial_f.is_finite() {
+                partial_f
+            } else {
+                f64::MAX
+            },
+            rss_before: rss,
+            rss_after,
+            residuals: n,
+        });
+        let mut with = ids;
+        with.push(best_id);
+        model = unflatten(&with, &best_fit.parameters[nn..]);
+        current_nuisance = best_fit.parameters[..nn].to_vec();
+        rss = rss_after;
+        current_bic = best_bic;
+    }
+    Some(Selection {
+        model,
+        nuisance: current_nuisance,
+        evidence,
+        confounded,
+    })
+}
+
+/// RMS of model − measured per longitudinal coefficient over `points`.
+fn rms(prediction: &Prediction, points: &[&Point], model: &Model) -> BTreeMap<String, f64> {
+    let refs = as_refs(model);
+    let mut out = BTreeMap::new();
+    for (k, name) in LONGITUDINAL.iter().enumerate() {
+        let d: Vec<f64> = points
+            .iter()
+            .filter_map(|p| {
+                let m = p.measured[k]?;
+                Some(pick(&apply(prediction, &refs, p.alpha_deg)?, k) - m)
+            })
+            .collect();
+        if !d.is_empty() {
+            out.insert(
+                name.to_string(),
+                (d.iter().map(|x| x * x).sum::<f64>() / d.len() as f64).sqrt(),
+            );
+        }
+    }
+    out
+}
+
+/// 95 % two-sided normal quantile.
+const Z95: f64 = 1.959_963_984_540_054;
+
+/// The chosen effects with parameters and 95 % intervals from a fit of `model` to `all`.
+pub(crate) fn chosen_effects<F>(
+    residuals: &F,
+    selection: &Selection,
+    nuisance: &Nuisance,
+) -> Vec<ChosenEffect>
+where
+    F: Fn(&Model, &[f64]) -> Option<Vec<f64>>,
+{
+    let (model, evidence) = (&selection.model, &selection.evidence);
+    let ids: Vec<EffectId> = model.iter().map(|(e, _)| *e).collect();
+    let start: Vec<f64> = selection
+        .nuisance
+        .iter()
+        .copied()
+        .chain(model.iter().flat_map(|(_, p)| p.clone()))
+        .collect();
+    let fitted = fit_model(residuals, &ids, &start, nuisance);
+    let mut k = selection.nuisance.len();
+    ids.iter()
+        .zip(evidence)
+        .map(|(id, ev)| {
+            let mut parameters = BTreeMap::new();
+            let mut ci95 = BTreeMap::new();
+            for name in id.parameters() {
+                let (v, se) = match &fitted {
+                    Some(f) => (f.parameters[k], f.standard_errors[k]),
+                    None => (start[k], f64::NAN),
+                };
+                parameters.insert(name.to_string(), v);
+                if se.is_finite() {
+                    ci95.insert(name.to_string(), [v - Z95 * se, v + Z95 * se]);
+                }
+                k += 1;
+            }
+            ChosenEffect {
+                id: *id,
+                parameters,
+                ci95,
+                evidence: ev.clone(),
+                description: id.description(),
+            }
+        })
+        .collect()
+}
+
+/// The model of chosen effects.
+pub fn model_of(effects: &[ChosenEffect]) -> Model {
+    effects
+        .iter()
+        .map(|e| {
+            (
+                e.id,
+                e.id.parameters()
+                    .iter()
+                    .map(|n| e.parameters.get(*n).copied().unwrap_or(f64::NAN))
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+/// Residual bins: each coefficient over the lower, middle and upper third of the measured
+/// angles.
+fn residual_bins(prediction: &Prediction, points: &[Point], sigma: &[f64; 3]) -> Vec<ResidualBin> {
+    let mut alphas: Vec<f64> = points.iter().map(|p| p.alpha_deg).collect();
+    alphas.sort_by(f64::total_cmp);
+    alphas.dedup();
+    let m = alphas.len();
+    if m == 0 {
+        return Vec::new();
+    }
+    let cuts = [0, m / 3, 2 * m / 3, m];
+    let mut out = Vec::new();
+    for (k, name) in LONGITUDINAL.iter().enumerate() {
+        for b in 0..3 {
+            if cuts[b] == cuts[b + 1] {
+                continue;
+            }
+            let (from, to) = (alphas[cuts[b]], alphas[cuts[b + 1] - 1]);
+            let d: Vec<f64> = points
+                .iter()
+                .filter(|p| p.alpha_deg >= from && p.alpha_deg <= to)
+                .filter_map(|p| Some(p.measured[k]? - pick(&prediction.at(p.alpha_deg)?, k)))
+                .collect();
+            if d.is_empty() {
+                continue;
+            }
+            let nf = d.len() as f64;
+            let mean = d.iter().sum::<f64>() / nf;
+            let z = mean / (sigma[k] / nf.sqrt());
+            out.push(ResidualBin {
+                coefficient: name.to_string(),
+                alpha_from_deg: from,
+                alpha_to_deg: to,
+                points: d.len(),
+                mean,
+                rms: (d.iter().map(|x| x * x).sum::<f64>() / nf).sqrt(),
+                sigma: sigma[k],
+                z,
+                significant: z.abs() > SIGNIFICANT_Z,
+            });
+        }
+    }
+    out
+}
+
+/// Noise per longitudinal coefficient: the mean of the given `sigma_<coef>`, else estimated
+/// from the residual curve measured − predicted (its point-to-point scatter, see
+/// [`data::noise_estimate`]), with a floor of 1E-6 so that a perfect match does not divide
+/// by zero.
+fn noise(
+    prediction: &Prediction,
+    measured: &Measurement,
+    rows: &[usize],
+) -> ([f64; 3], BTreeMap<String, String>) {
+    let mut sigma = [1.0; 3];
+    let mut source = BTreeMap::new();
+    for (k, name) in LONGITUDINAL.iter().enumerate() {
+        let given: Vec<f64> = measured
+            .sigma
+            .get(*name)
+            .map(|s| rows.iter().filter_map(|&r| s[r]).collect())
+            .unwrap_or_default();
+        if !given.is_empty() {
+            sigma[k] = given.iter().sum::<f64>() / given.len() as f64;
+            source.insert(name.to_string(), format!("given (sigma_{name})"));
+            continue;
+        }
+        let Some(values) = measured.values.get(*name) else {
+            continue;
+        };
+        let mut pairs: Vec<(f64, f64)> = rows
+            .iter()
+            .filter_map(|&r| {
+                let a = measured.alpha_deg[r];
+                Some((a, values[r]? - pick(&prediction.at(a)?, k)))
+            })
+            .collect();
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (x, y): (Vec<f64>, Vec<f64>) = pairs.into_iter().unzip();
+        sigma[k] = data::noise_estimate(&x, &y).unwrap_or(1.0).max(1e-6);
+        source.insert(
+            name.to_string(),
+            "estimated from the scatter of the residuals".to_string(),
+        );
+    }
+    (sigma, source)
+}
+
+/// The workflow on static data (see the module documentation and [`Options`]).
+pub fn analyse_static(
+    prediction: &Prediction,
+    measured: &Measurement,
+    options: &Options,
+) -> Result<Analysis, DiscrepancyError> {
+    prediction
+        .validate()
+        .map_err(|reason| DiscrepancyError::NoPrediction { reason })?;
+    let mut warnings = Vec::new();
+    let (lo, hi) = (
+        prediction.alpha_deg[0],
+        prediction.alpha_deg[prediction.alpha_deg.len() - 1],
+    );
+    let rows: Vec<usize> = (0..measured.alpha_deg.len())
+        .filter(|&r| measured.beta_deg[r].abs() <= options.beta_zero_deg)
+        .collect();
+    let outside = rows
+        .iter()
+        .filter(|&&r| !(lo..=hi).contains(&measured.alpha_deg[r]))
+        .count();
+    if outside > 0 {
+        warnings.push(format!(
+            "{outside} measured point(s) outside the prediction's angles ({lo} to {hi} deg) are left out"
+        ));
+    }
+    let rows: Vec<usize> = rows
+        .into_iter()
+        .filter(|&r| (lo..=hi).contains(&measured.alpha_deg[r]))
+        .collect();
+    let column = |name: &str, r: usize| measured.values.get(name).and_then(|v| v[r]);
+    let mut points: Vec<Point> = rows
+        .iter()
+        .map(|&r| Point {
+            alpha_deg: measured.alpha_deg[r],
+            measured: [column("CL", r), column("CD", r), column("Cm", r)],
+        })
+        .filter(|p| p.measured.iter().any(Option::is_some))
+        .collect();
+    if points.is_empty() {
+        return Err(DiscrepancyError::NoOverlap { from: lo, to: hi });
+    }
+    points.sort_by(|a, b| a.alpha_deg.total_cmp(&b.alpha_deg));
+    let (sigma, sigma_source) = noise(prediction, measured, &rows);
+    let mut candidates = options.candidates.clone();
+    if prediction.tail_cl.is_none() || prediction.tail_cm.is_none() {
+        if candidates.contains(&EffectId::TailEfficiency) {
+            warnings.push("tail_efficiency is not a candidate: the prediction has no horizontal-tail contributions (CL_tail, Cm_tail)".into());
+        }
+        candidates.retain(|c| *c != EffectId::TailEfficiency);
+    }
+    let every = options.holdout_every.max(2);
+    let training: Vec<&Point> = points
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| i % every != every - 1)
+        .map(|(_, p)| p)
+        .collect();
+    let held_out: Vec<&Point> = points
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| i % every == every - 1)
+        .map(|(_, p)| p)
+        .collect();
+    let all: Vec<&Point> = points.iter().collect();
+    let on_training =
+        |m: &Model, _: &[f64]| static_residuals(prediction, &training, &sigma, &as_refs(m));
+    let on_all = |m: &Model, _: &[f64]| static_residuals(prediction, &all, &sigma, &as_refs(m));
+    let alphas: Vec<f64> = points.iter().map(|p| p.alpha_deg).collect();
+    let none = Nuisance::default();
+    let selection =
+        stepwise(&on_training, &candidates, &alphas, &none, options).ok_or_else(|| {
+            DiscrepancyError::NoPrediction {
+                reason: "the prediction cannot be evaluated at the measured angles".into(),
+            }
+        })?;
+    let effects = chosen_effects(&on_all, &selection, &none);
+    let corrected = model_of(&effects);
+    Ok(Analysis {
+        rms_before: rms(prediction, &all, &Vec::new()),
+        rms_after: rms(prediction, &all, &corrected),
+        validation_rms_before: rms(prediction, &held_out, &Vec::new()),
+        validation_rms_after: rms(prediction, &held_out, &selection.model),
+        effects,
+        confounded: selection.confounded,
+        residuals: residual_bins(prediction, &points, &sigma),
+        sigma: LONGITUDINAL
+            .iter()
+            .zip(sigma)
+            .filter(|(n, _)| sigma_source.contains_key(**n))
+            .map(|(n, s)| (n.to_string(), s))
+            .collect(),
+        sigma_source,
+        criterion: "BIC = n ln(RSS/n) + k ln n, added when it falls by more than min_bic_drop",
+        warnings,
+    })
+}
