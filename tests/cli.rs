@@ -117,3 +117,20 @@ fn help_everywhere() {
         assert!(!out.stdout.is_empty());
     }
 }
+
+/// The README's main command: the AEROMECH I deck runs and prints its configuration pages with
+/// static and dynamic derivatives.
+#[test]
+fn the_readme_main_command_prints_the_aeromech1_results() {
+    let deck = format!("{}/namelists/aeromech1.dcm", env!("CARGO_MANIFEST_DIR"));
+    let out = bin().args(["run", &deck]).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    for page in [
+        "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION",
+        "DYNAMIC DERIVATIVES",
+        "AEROMECH",
+    ] {
+        assert!(stdout.contains(page), "no {page:?} in the output");
+    }
+}
