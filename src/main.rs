@@ -126,6 +126,60 @@ enum Command {
         #[arg(long, value_enum, default_value = "flight")]
         reynolds: ReynoldsRule,
     },
+    /// Compare a prediction with measurements: residuals and their significance, the missing
+    /// physical effects named from a catalogue (stepwise, BIC), fitted with 95 % intervals,
+    /// and the RMS before and after (docs/discrepancy.md). With --flight, the measurements are
+    /// a recorded flight and the effects are fitted by output error through a longitudinal
+    /// simulation.
+    Discrepancy {
+        /// A deck whose run is the prediction.
+        #[arg(
+            long,
+            value_name = "DECK",
+            required_unless_present = "predicted",
+            conflicts_with = "predicted"
+        )]
+        model: Option<PathBuf>,
+        /// A prediction table (CSV: alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail).
+        #[arg(long, value_name = "PRED.csv")]
+        predicted: Option<PathBuf>,
+        /// Measurements (CSV): static (alpha_deg, beta_deg, CL, CD, Cm, ..., sigma_<coef>) or,
+        /// with --flight, a time history (t, elevator_deg, thrust_n, airspeed_mps, alpha_deg,
+        /// pitch_rate_dps, theta_deg).
+        #[arg(long, value_name = "MEAS.csv")]
+        measured: PathBuf,
+        /// The measurements are a recorded flight.
+        #[arg(long)]
+        flight: bool,
+        /// Airframe values for --flight (TOML: mass_kg, iyy_kgm2, cl_de_per_rad,
+        /// cm_de_per_rad, ...; the deck gives mass, area, chord, density and cmq).
+        #[arg(long, value_name = "FILE")]
+        airframe: Option<PathBuf>,
+        /// Case of the deck (1-based).
+        #[arg(long, default_value_t = 1)]
+        case: usize,
+        /// Flight condition of the case (1-based, in the order of `run`).
+        #[arg(long, default_value_t = 1)]
+        condition: usize,
+        /// Write the analysis as JSON to this file.
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// Subtract this from the measured angles of attack (a known alpha-reference offset).
+        #[arg(
+            long,
+            value_name = "DEG",
+            default_value_t = 0.0,
+            allow_negative_numbers = true
+        )]
+        alpha_offset: f64,
+        /// Noise of measured coefficients, e.g. CL=0.005,CD=0.001,Cm=0.002 (else the
+        /// sigma_<coef> columns, else estimated from the data).
+        #[arg(long, value_name = "COEF=SIGMA,...", value_delimiter = ',')]
+        sigma: Vec<String>,
+        /// Reynolds number of the section methods (see `run`).
+        #[arg(long, value_enum, default_value = "flight")]
+        reynolds: ReynoldsRule,
+    },
     /// Run a deck: flight conditions and coefficients.
     Run {
         deck: PathBuf,
@@ -347,6 +401,140 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, reynolds: Reynold
     ExitCode::SUCCESS
 }
 
+fn read_text(path: &Path) -> Result<String, ExitCode> {
+    std::fs::read(path)
+        .map(|b| String::from_utf8_lossy(&b).into_owned())
+        .map_err(|e| {
+            eprintln!("datcom-rs: cannot read {}: {e}", path.display());
+            ExitCode::from(2)
+        })
+}
+
+/// The options of `discrepancy`.
+struct DiscrepancyArgs {
+    model: Option<PathBuf>,
+    predicted: Option<PathBuf>,
+    measured: PathBuf,
+    flight: bool,
+    airframe: Option<PathBuf>,
+    case: usize,
+    condition: usize,
+    json: Option<PathBuf>,
+    alpha_offset: f64,
+    sigma: Vec<String>,
+    reynolds: ReynoldsRule,
+}
+
+fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
+    use datcom::discrepancy as dy;
+    let fail = |e: &dyn std::fmt::Display| {
+        eprintln!("datcom-rs: {e}");
+        ExitCode::from(2)
+    };
+    let (prediction, deck_model) = match (&a.model, &a.predicted) {
+        (Some(deck), _) => {
+            let d = match load(deck) {
+                Ok(d) => d.with_section_reynolds(a.reynolds.rule()),
+                Err(code) => return code,
+            };
+            print_diagnostics(&d, false, &mut std::io::stderr().lock());
+            if d.has_errors() {
+                eprintln!(
+                    "datcom-rs: {} has {} error(s)",
+                    deck.display(),
+                    d.error_count()
+                );
+                return ExitCode::from(1);
+            }
+            match dy::prediction::from_deck(&d, a.case, a.condition.saturating_sub(1)) {
+                Ok(m) => {
+                    for w in &m.warnings {
+                        eprintln!("warning: {w}");
+                    }
+                    (m.prediction.clone(), Some(m))
+                }
+                Err(e) => return fail(&e),
+            }
+        }
+        (None, Some(p)) => {
+            let text = match read_text(p) {
+                Ok(t) => t,
+                Err(c) => return c,
+            };
+            match dy::data::read_prediction(&text, &p.display().to_string()) {
+                Ok(pr) => (pr, None),
+                Err(e) => return fail(&e),
+            }
+        }
+        (None, None) => return fail(&"give --model DECK or --predicted PRED.csv"),
+    };
+    let measured_text = match read_text(&a.measured) {
+        Ok(t) => t,
+        Err(c) => return c,
+    };
+    let name = a.measured.display().to_string();
+    let options = dy::Options::default();
+    let (text, json) = if a.flight {
+        let input: dy::flight::AirframeInput = match &a.airframe {
+            Some(f) => match read_text(f).map(|t| toml::from_str(&t)) {
+                Ok(Ok(i)) => i,
+                Ok(Err(e)) => return fail(&format!("{}: {e}", f.display())),
+                Err(c) => return c,
+            },
+            None => dy::flight::AirframeInput::default(),
+        };
+        let airframe = match input.resolve(deck_model.as_ref()) {
+            Ok(x) => x,
+            Err(e) => return fail(&e),
+        };
+        let record = match dy::flight::FlightRecord::from_csv(&measured_text, &name) {
+            Ok(r) => r,
+            Err(e) => return fail(&e),
+        };
+        match dy::flight::analyse_flight(&prediction, &airframe, &record, &options) {
+            Ok(r) => (r.to_text(), serde_json::to_string_pretty(&r)),
+            Err(e) => return fail(&e),
+        }
+    } else {
+        let mut measured = match dy::data::read_measurement(&measured_text, &name) {
+            Ok(m) => m.with_alpha_offset(a.alpha_offset),
+            Err(e) => return fail(&e),
+        };
+        for item in &a.sigma {
+            let parsed = item
+                .split_once('=')
+                .and_then(|(c, v)| Some((c.trim(), v.trim().parse::<f64>().ok()?)));
+            let Some((coefficient, value)) = parsed else {
+                return fail(&format!(
+                    "--sigma {item}: expected COEF=VALUE, e.g. CL=0.005"
+                ));
+            };
+            measured = match measured.with_sigma(coefficient, value) {
+                Ok(m) => m,
+                Err(e) => return fail(&e),
+            };
+        }
+        match dy::analyse_static(&prediction, &measured, &options) {
+            Ok(r) => (r.to_text(), serde_json::to_string_pretty(&r)),
+            Err(e) => return fail(&e),
+        }
+    };
+    if let Some(path) = &a.json {
+        let body = match json {
+            Ok(j) => j,
+            Err(e) => return fail(&e),
+        };
+        if let Err(e) = std::fs::write(path, body + "\n") {
+            eprintln!("datcom-rs: cannot write {}: {e}", path.display());
+            return ExitCode::from(2);
+        }
+    }
+    if std::io::stdout().lock().write_all(text.as_bytes()).is_err() {
+        return ExitCode::from(2);
+    }
+    ExitCode::SUCCESS
+}
+
 fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
     let name = namelist.to_ascii_uppercase();
     if !["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"].contains(&name.as_str()) {
@@ -419,6 +607,31 @@ fn main() -> ExitCode {
             format,
             reynolds,
         } => report(&deck, &reference, format, reynolds),
+        Command::Discrepancy {
+            model,
+            predicted,
+            measured,
+            flight,
+            airframe,
+            case,
+            condition,
+            json,
+            alpha_offset,
+            sigma,
+            reynolds,
+        } => discrepancy(&DiscrepancyArgs {
+            model,
+            predicted,
+            measured,
+            flight,
+            airframe,
+            case,
+            condition,
+            json,
+            alpha_offset,
+            sigma,
+            reynolds,
+        }),
         Command::Airfoil {
             file,
             namelist,

@@ -115,6 +115,43 @@ impl Table {
     }
 }
 
+impl Measurement {
+    /// The measurements with `offset_deg` subtracted from every angle of attack (an alpha
+    /// reference known to be off, e.g. the Ultra Stick 120 tables' 2°).
+    pub fn with_alpha_offset(mut self, offset_deg: f64) -> Measurement {
+        for a in &mut self.alpha_deg {
+            *a -= offset_deg;
+        }
+        self
+    }
+
+    /// The measurements with the noise of `coefficient` given as `sigma` at every row (in
+    /// place of any `sigma_<coef>` column).
+    pub fn with_sigma(
+        mut self,
+        coefficient: &str,
+        sigma: f64,
+    ) -> Result<Measurement, DiscrepancyError> {
+        if !COEFFICIENTS.contains(&coefficient) {
+            return Err(DiscrepancyError::Invalid {
+                reason: format!(
+                    "sigma for {coefficient:?}: expected one of CL, CD, Cm, CY, Cl, Cn"
+                ),
+            });
+        }
+        if !(sigma.is_finite() && sigma > 0.0) {
+            return Err(DiscrepancyError::Invalid {
+                reason: format!("sigma for {coefficient} must be positive, found {sigma}"),
+            });
+        }
+        self.sigma.insert(
+            coefficient.to_string(),
+            vec![Some(sigma); self.alpha_deg.len()],
+        );
+        Ok(self)
+    }
+}
+
 /// Reads static measurements: `alpha_deg` (required), `beta_deg` (optional), any of CL, CD,
 /// Cm, CY, Cl, Cn, and `sigma_<coef>` columns.
 pub fn read_measurement(text: &str, file: &str) -> Result<Measurement, DiscrepancyError> {

@@ -386,6 +386,8 @@ pub struct FlightAnalysis {
     /// Noise per state (estimated from the record's scatter).
     pub sigma: BTreeMap<String, f64>,
     pub criterion: &'static str,
+    /// Every step of the selection with each candidate's fall of BIC.
+    pub selection: Vec<super::Step>,
     /// The simulated histories, prediction and corrected, per state.
     pub simulated_before: BTreeMap<String, Vec<f64>>,
     pub simulated_after: BTreeMap<String, Vec<f64>>,
@@ -513,8 +515,87 @@ pub fn analyse_flight(
         effects,
         confounded: selection.confounded,
         criterion: "BIC = n ln(RSS/n) + k ln n on the output errors, added when it falls by more than min_bic_drop",
+        selection: selection.trace.clone(),
         simulated_before: named(&ob),
         simulated_after: named(&oa),
         warnings,
     })
+}
+
+/// The airframe as a file gives it (TOML, every field optional): what a deck does not give
+/// (inertia, elevator derivatives), or overrides of what it gives.
+#[derive(Debug, Clone, PartialEq, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct AirframeInput {
+    pub mass_kg: Option<f64>,
+    pub iyy_kgm2: Option<f64>,
+    pub area_m2: Option<f64>,
+    pub chord_m: Option<f64>,
+    pub density_kgm3: Option<f64>,
+    pub clq_per_rad: Option<f64>,
+    pub cmq_per_rad: Option<f64>,
+    pub cl_de_per_rad: Option<f64>,
+    pub cm_de_per_rad: Option<f64>,
+}
+
+impl AirframeInput {
+    /// The airframe from this input, completed from a deck's model (mass from WT, reference
+    /// area and chord, density of the condition, CLq and Cmq of its dynamic page). An error
+    /// names each value neither gives.
+    pub fn resolve(
+        &self,
+        deck: Option<&super::prediction::DeckModel>,
+    ) -> Result<Airframe, DiscrepancyError> {
+        let mut missing = Vec::new();
+        let mut need = |name: &'static str, given: Option<f64>, from_deck: Option<f64>| {
+            given.or(from_deck).unwrap_or_else(|| {
+                missing.push(name);
+                f64::NAN
+            })
+        };
+        let a = Airframe {
+            mass_kg: need(
+                "mass_kg",
+                self.mass_kg,
+                deck.and_then(|d| d.weight_n).map(|w| w / G),
+            ),
+            iyy_kgm2: need("iyy_kgm2", self.iyy_kgm2, None),
+            area_m2: need(
+                "area_m2",
+                self.area_m2,
+                deck.and_then(|d| d.reference_area_m2),
+            ),
+            chord_m: need(
+                "chord_m",
+                self.chord_m,
+                deck.and_then(|d| d.reference_chord_m),
+            ),
+            density_kgm3: need(
+                "density_kgm3",
+                self.density_kgm3,
+                deck.and_then(|d| d.density),
+            ),
+            clq_per_rad: self
+                .clq_per_rad
+                .or(deck.and_then(|d| d.clq_per_rad))
+                .unwrap_or(0.0),
+            cmq_per_rad: need(
+                "cmq_per_rad",
+                self.cmq_per_rad,
+                deck.and_then(|d| d.cmq_per_rad),
+            ),
+            cl_de_per_rad: self.cl_de_per_rad.unwrap_or(0.0),
+            cm_de_per_rad: need("cm_de_per_rad", self.cm_de_per_rad, None),
+        };
+        if !missing.is_empty() {
+            return Err(DiscrepancyError::Invalid {
+                reason: format!(
+                    "the flight mode needs {} (hint: give them in the --airframe file; a deck with WT, $OPTINS and DAMP gives mass, area, chord, density and cmq)",
+                    missing.join(", ")
+                ),
+            });
+        }
+        a.validate()?;
+        Ok(a)
+    }
 }

@@ -154,8 +154,14 @@ pub struct Analysis {
     pub sigma: BTreeMap<String, f64>,
     pub sigma_source: BTreeMap<String, String>,
     pub criterion: &'static str,
+    /// Every step of the selection with each candidate's fall of BIC.
+    pub selection: Vec<Step>,
     pub warnings: Vec<String>,
 }
+
+/// Fewer measured angles than this are all used for the fit (holding a quarter out would
+/// leave too few to select and fit effects); the validation is then not made.
+pub const MIN_POINTS_TO_HOLD_OUT: usize = 12;
 
 /// One longitudinal point of the fit.
 #[derive(Debug, Clone, PartialEq)]
@@ -292,6 +298,14 @@ pub(crate) struct Selection {
     pub nuisance: Vec<f64>,
     pub evidence: Vec<Evidence>,
     pub confounded: Vec<Vec<EffectId>>,
+    pub trace: Vec<Step>,
+}
+
+/// One step of the selection: every candidate tried and how much it lowered BIC (negative:
+/// raised it), best first.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Step {
+    pub candidates: Vec<(EffectId, f64)>,
 }
 
 fn bic(rss: f64, n: usize, k: usize) -> f64 {
@@ -323,6 +337,7 @@ where
     let mut current_bic = bic(rss, n, 0);
     let mut evidence = Vec::new();
     let mut confounded = Vec::new();
+    let mut trace = Vec::new();
     while model.len() < options.max_effects {
         let ids: Vec<EffectId> = model.iter().map(|(e, _)| *e).collect();
         let base: Vec<f64> = model.iter().flat_map(|(_, p)| p.clone()).collect();
@@ -359,6 +374,12 @@ where
             .map(|(id, f)| (bic(f.chi_square, n, k_of(id)), id, f))
             .collect();
         scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+        trace.push(Step {
+            candidates: scored
+                .iter()
+                .map(|(b, id, _)| (*id, current_bic - b))
+                .collect(),
+        });
         let Some((best_bic, best_id, best_fit)) = scored.first().cloned() else {
             break;
         };
@@ -404,6 +425,7 @@ where
         nuisance: current_nuisance,
         evidence,
         confounded,
+        trace,
     })
 }
 
@@ -634,16 +656,23 @@ pub fn analyse_static(
         candidates.retain(|c| *c != EffectId::TailEfficiency);
     }
     let every = options.holdout_every.max(2);
+    let hold = |i: usize| points.len() >= MIN_POINTS_TO_HOLD_OUT && i % every == every - 1;
+    if points.len() < MIN_POINTS_TO_HOLD_OUT {
+        warnings.push(format!(
+            "{} measured angles: too few to hold points out, so no held-out validation (at least {MIN_POINTS_TO_HOLD_OUT})",
+            points.len()
+        ));
+    }
     let training: Vec<&Point> = points
         .iter()
         .enumerate()
-        .filter(|(i, _)| i % every != every - 1)
+        .filter(|(i, _)| !hold(*i))
         .map(|(_, p)| p)
         .collect();
     let held_out: Vec<&Point> = points
         .iter()
         .enumerate()
-        .filter(|(i, _)| i % every == every - 1)
+        .filter(|(i, _)| hold(*i))
         .map(|(_, p)| p)
         .collect();
     let all: Vec<&Point> = points.iter().collect();
@@ -676,6 +705,131 @@ pub fn analyse_static(
             .collect(),
         sigma_source,
         criterion: "BIC = n ln(RSS/n) + k ln n, added when it falls by more than min_bic_drop",
+        selection: selection.trace,
         warnings,
     })
+}
+
+fn map_line(m: &BTreeMap<String, f64>) -> String {
+    m.iter()
+        .map(|(k, v)| format!("{k} {v:.5}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn effect_lines(effects: &[ChosenEffect], out: &mut String) {
+    if effects.is_empty() {
+        out.push_str("no effect is missing: nothing lowers BIC enough\n");
+    }
+    for (k, e) in effects.iter().enumerate() {
+        out.push_str(&format!(
+            "{}. {} (BIC falls {:.1}, partial F {:.1})\n   {}\n",
+            k + 1,
+            e.id.name(),
+            e.evidence.bic_drop,
+            e.evidence.partial_f,
+            e.description
+        ));
+        for (name, v) in &e.parameters {
+            let ci = e.ci95.get(name).map_or(String::new(), |[lo, hi]| {
+                format!(" (95 %: {lo:.5} to {hi:.5})")
+            });
+            out.push_str(&format!("   {name} = {v:.5}{ci}\n"));
+        }
+    }
+}
+
+fn trace_lines(steps: &[Step], out: &mut String) {
+    for (k, step) in steps.iter().enumerate() {
+        let tried: Vec<String> = step
+            .candidates
+            .iter()
+            .map(|(id, drop)| format!("{} {drop:.1}", id.name()))
+            .collect();
+        out.push_str(&format!(
+            "step {}: BIC falls by {}\n",
+            k + 1,
+            tried.join(", ")
+        ));
+    }
+}
+
+fn confounded_lines(groups: &[Vec<EffectId>], out: &mut String) {
+    for g in groups {
+        let names: Vec<&str> = g.iter().map(|e| e.name()).collect();
+        out.push_str(&format!(
+            "confounded (explain the data equally well; not chosen between): {}\n",
+            names.join(", ")
+        ));
+    }
+}
+
+impl Analysis {
+    /// The analysis as text for a person.
+    pub fn to_text(&self) -> String {
+        let mut out =
+            String::from("Where prediction and measurement disagree (measured − predicted):\n");
+        out.push_str(&format!(
+            "{:<4} {:>16} {:>6} {:>10} {:>10} {:>10} {:>7}\n",
+            "coef", "alpha range deg", "points", "mean", "rms", "sigma", "z"
+        ));
+        for b in &self.residuals {
+            out.push_str(&format!(
+                "{:<4} {:>7.2} to {:>5.2} {:>6} {:>10.5} {:>10.5} {:>10.5} {:>7.1}{}\n",
+                b.coefficient,
+                b.alpha_from_deg,
+                b.alpha_to_deg,
+                b.points,
+                b.mean,
+                b.rms,
+                b.sigma,
+                b.z,
+                if b.significant { "  significant" } else { "" }
+            ));
+        }
+        for (k, s) in &self.sigma_source {
+            out.push_str(&format!("noise of {k}: {s}\n"));
+        }
+        out.push_str(&format!("\nEffects added ({}):\n", self.criterion));
+        effect_lines(&self.effects, &mut out);
+        trace_lines(&self.selection, &mut out);
+        confounded_lines(&self.confounded, &mut out);
+        out.push_str(&format!(
+            "\nRMS before: {}\nRMS after:  {}\n",
+            map_line(&self.rms_before),
+            map_line(&self.rms_after)
+        ));
+        out.push_str(&format!(
+            "held-out points, RMS before: {}\nheld-out points, RMS after:  {}\n",
+            map_line(&self.validation_rms_before),
+            map_line(&self.validation_rms_after)
+        ));
+        for w in &self.warnings {
+            out.push_str(&format!("warning: {w}\n"));
+        }
+        out
+    }
+}
+
+impl flight::FlightAnalysis {
+    /// The flight analysis as text for a person.
+    pub fn to_text(&self) -> String {
+        let mut out = format!(
+            "Output-error fit of the effect catalogue ({}):\n",
+            self.criterion
+        );
+        effect_lines(&self.effects, &mut out);
+        trace_lines(&self.selection, &mut out);
+        confounded_lines(&self.confounded, &mut out);
+        out.push_str(&format!(
+            "\nstate RMS (simulated − recorded) before: {}\nstate RMS after:  {}\nnoise: {}\n",
+            map_line(&self.rms_before),
+            map_line(&self.rms_after),
+            map_line(&self.sigma)
+        ));
+        for w in &self.warnings {
+            out.push_str(&format!("warning: {w}\n"));
+        }
+        out
+    }
 }
