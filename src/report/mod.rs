@@ -7,6 +7,7 @@
 pub mod compare;
 pub mod csv;
 pub mod for006;
+pub mod jsbsim;
 pub mod json;
 pub mod legacy;
 pub mod percent_error;
