@@ -179,6 +179,22 @@ pub struct CaseResults {
     pub warnings: Vec<String>,
 }
 
+impl CaseResults {
+    /// For each flight condition, its last configuration entry: the case's most complete
+    /// configuration (with BUILD the component configurations come first), in condition order.
+    pub fn most_complete(&self) -> Vec<&ConditionResults> {
+        let mut last: Vec<&ConditionResults> = Vec::new();
+        let key = |x: &ConditionResults| (x.condition.mach_index, x.condition.altitude_index);
+        for c in &self.conditions {
+            match last.last_mut() {
+                Some(l) if key(l) == key(c) => *l = c,
+                _ => last.push(c),
+            }
+        }
+        last
+    }
+}
+
 /// Results of every case of a deck.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Results {

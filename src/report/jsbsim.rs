@@ -388,17 +388,12 @@ pub struct AeroModel {
 
 /// The flight conditions the export uses: for each condition the last configuration entry
 /// (the case's most complete configuration), at the first altitude, one per Mach number,
-/// sorted by Mach; and what was left out.
-fn select(results: &CaseResults) -> Result<(Vec<&ConditionResults>, Vec<String>), ExportError> {
+/// sorted by Mach; and what was left out, with the reason.
+pub fn conditions(
+    results: &CaseResults,
+) -> Result<(Vec<&ConditionResults>, Vec<String>), ExportError> {
     let case = results.number;
-    let mut last: Vec<&ConditionResults> = Vec::new();
-    for c in &results.conditions {
-        let key = |x: &ConditionResults| (x.condition.mach_index, x.condition.altitude_index);
-        match last.last_mut() {
-            Some(l) if key(l) == key(c) => *l = c,
-            _ => last.push(c),
-        }
-    }
+    let last = results.most_complete();
     let first_altitude = last
         .iter()
         .map(|c| c.condition.altitude_index)
@@ -561,7 +556,7 @@ fn coefficient(
 /// The aerodynamics of a case: the last configuration of each of its flight conditions at the
 /// first altitude.
 pub fn model(deck: &str, results: &CaseResults) -> Result<AeroModel, ExportError> {
-    let (conditions, conditions_not_used) = select(results)?;
+    let (conditions, conditions_not_used) = conditions(results)?;
     let first = conditions[0];
     let alpha_deg = first.alpha_deg.clone();
     let mut functions = Vec::new();
