@@ -97,6 +97,15 @@ enum ExportTarget {
 
 #[derive(Subcommand)]
 enum Command {
+    /// SVG figures of every case: CL, CD, Cm against alpha, the drag polar, Cm against CL, the
+    /// sideslip and dynamic derivatives against alpha; one series per flight condition.
+    Plot {
+        deck: PathBuf,
+        /// Directory of the figures: DIR/<deck>-<figure>.svg (<deck>-case<N>-<figure>.svg
+        /// when the deck has several cases).
+        #[arg(short = 'o', long = "output", value_name = "DIR")]
+        output: PathBuf,
+    },
     /// Export a case for another tool.
     Export {
         #[command(subcommand)]
@@ -521,9 +530,52 @@ fn export_jsbsim(o: JsbsimExport) -> ExitCode {
     }
 }
 
+fn plot(deck: &Path, dir: &Path) -> ExitCode {
+    let d = match load(deck) {
+        Ok(d) => d,
+        Err(code) => return code,
+    };
+    print_diagnostics(&d, false, &mut std::io::stderr().lock());
+    let results = datcom::run(&d);
+    let stem = deck
+        .file_stem()
+        .map_or("deck".into(), |s| s.to_string_lossy());
+    let several = results.cases.len() > 1;
+    let mut code = ExitCode::SUCCESS;
+    if let Err(e) = std::fs::create_dir_all(dir) {
+        eprintln!("datcom-rs: cannot create {}: {e}", dir.display());
+        return ExitCode::from(2);
+    }
+    for case in &results.cases {
+        let figures = match datcom::report::plot::figures(case) {
+            Ok(f) => f,
+            Err(e) => {
+                eprintln!("datcom-rs: {}: {e}", deck.display());
+                code = ExitCode::from(1);
+                continue;
+            }
+        };
+        for f in figures {
+            let file = if several {
+                format!("{stem}-case{}-{}.svg", case.number, f.name)
+            } else {
+                format!("{stem}-{}.svg", f.name)
+            };
+            let path = dir.join(file);
+            if let Err(e) = std::fs::write(&path, &f.svg) {
+                eprintln!("datcom-rs: cannot write {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+            eprintln!("wrote {}", path.display());
+        }
+    }
+    code
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
+        Command::Plot { deck, output } => plot(&deck, &output),
         Command::Export {
             target:
                 ExportTarget::Jsbsim {

@@ -11,6 +11,7 @@ pub mod jsbsim;
 pub mod json;
 pub mod legacy;
 pub mod percent_error;
+pub mod plot;
 pub mod text;
 
 use crate::case::units::from_si;
