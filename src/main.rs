@@ -71,28 +71,32 @@ enum ExportTarget {
     /// A JSBSim `<aerodynamics>` section (and, with --aircraft, a whole minimal aircraft):
     /// one aero/coefficient function per DATCOM term, tables over alpha (and Mach), in feet
     /// and pounds (docs/jsbsim.md).
-    Jsbsim {
-        deck: PathBuf,
-        /// Write the `<aerodynamics>` file here (standard output when neither -o nor
-        /// --aircraft is given).
-        #[arg(short = 'o', long = "output", value_name = "FILE")]
-        output: Option<PathBuf>,
-        /// Also write a whole aircraft, DIR/<name>/<name>.xml, that JSBSim can load.
-        #[arg(long, value_name = "DIR")]
-        aircraft: Option<PathBuf>,
-        /// The aircraft's name (default: the deck's file name without extension).
-        #[arg(long)]
-        name: Option<String>,
-        /// The case of the deck to export (1-based).
-        #[arg(long, default_value_t = 1)]
-        case: usize,
-        /// Weight, lbf, when the deck gives no WT (or to replace it).
-        #[arg(long, value_name = "LBF")]
-        weight_lbf: Option<f64>,
-        /// Ixx,Iyy,Izz about the c.g., slug·ft² (default: an estimate, see docs/jsbsim.md).
-        #[arg(long, value_name = "IXX,IYY,IZZ", value_delimiter = ',')]
-        inertia_slugft2: Option<Vec<f64>>,
-    },
+    Jsbsim(JsbsimExport),
+}
+
+/// The options of `export jsbsim`.
+#[derive(clap::Args)]
+struct JsbsimExport {
+    deck: PathBuf,
+    /// Write the `<aerodynamics>` file here (standard output when neither -o nor
+    /// --aircraft is given).
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// Also write a whole aircraft, DIR/<name>/<name>.xml, that JSBSim can load.
+    #[arg(long, value_name = "DIR")]
+    aircraft: Option<PathBuf>,
+    /// The aircraft's name (default: the deck's file name without extension).
+    #[arg(long)]
+    name: Option<String>,
+    /// The case of the deck to export (1-based).
+    #[arg(long, default_value_t = 1)]
+    case: usize,
+    /// Weight, lbf, when the deck gives no WT (or to replace it).
+    #[arg(long, value_name = "LBF")]
+    weight_lbf: Option<f64>,
+    /// Ixx,Iyy,Izz about the c.g., slug·ft² (default: an estimate, see docs/jsbsim.md).
+    #[arg(long, value_name = "IXX,IYY,IZZ", value_delimiter = ',')]
+    inertia_slugft2: Option<Vec<f64>>,
 }
 
 #[derive(Subcommand)]
@@ -427,17 +431,6 @@ fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
     }
 }
 
-/// The options of `export jsbsim`, checked.
-struct JsbsimExport {
-    deck: PathBuf,
-    output: Option<PathBuf>,
-    aircraft: Option<PathBuf>,
-    name: Option<String>,
-    case: usize,
-    weight_lbf: Option<f64>,
-    inertia_slugft2: Option<Vec<f64>>,
-}
-
 fn export_jsbsim(o: JsbsimExport) -> ExitCode {
     use datcom::report::jsbsim::{self, KGM2_PER_SLUGFT2, N_PER_LBF};
     let inertia_kgm2 = match o.inertia_slugft2.as_deref() {
@@ -577,25 +570,8 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Plot { deck, output } => plot(&deck, &output),
         Command::Export {
-            target:
-                ExportTarget::Jsbsim {
-                    deck,
-                    output,
-                    aircraft,
-                    name,
-                    case,
-                    weight_lbf,
-                    inertia_slugft2,
-                },
-        } => export_jsbsim(JsbsimExport {
-            deck,
-            output,
-            aircraft,
-            name,
-            case,
-            weight_lbf,
-            inertia_slugft2,
-        }),
+            target: ExportTarget::Jsbsim(options),
+        } => export_jsbsim(options),
         Command::Check { decks, notes } => check(&decks, notes),
         Command::Import { listing, format } => {
             let text = match std::fs::read(&listing) {

@@ -95,31 +95,9 @@ fn python_jsbsim() -> Result<String, String> {
     Ok(String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
-/// A result column by its DATCOM name.
+/// A result column by its DATCOM name (empty without DAMP).
 fn column<'a>(c: &'a ConditionResults, name: &str) -> &'a [Option<f64>] {
-    let s = &c.static_coefficients;
-    let d = c.dynamic.as_ref();
-    let dynamic = |f: fn(&datcom::results::DynamicDerivatives) -> &Vec<Option<f64>>| {
-        d.map(|d| f(d).as_slice()).unwrap_or(&[])
-    };
-    match name {
-        "CL" => &s.cl,
-        "CD" => &s.cd,
-        "CM" => &s.cm,
-        "CYB" => &s.cyb,
-        "CNB" => &s.cnb,
-        "CLB" => &s.clb,
-        "CLQ" => dynamic(|d| &d.clq),
-        "CMQ" => dynamic(|d| &d.cmq),
-        "CLAD" => dynamic(|d| &d.clad),
-        "CMAD" => dynamic(|d| &d.cmad),
-        "CLP" => dynamic(|d| &d.clp),
-        "CYP" => dynamic(|d| &d.cyp),
-        "CNP" => dynamic(|d| &d.cnp),
-        "CNR" => dynamic(|d| &d.cnr),
-        "CLR" => dynamic(|d| &d.clr),
-        _ => panic!("no column {name}"),
-    }
+    c.column(name).unwrap_or(&[])
 }
 
 /// Our value of a column at α (deg) in one condition: linear between the two angles around
@@ -151,64 +129,26 @@ fn ours(conditions: &[&ConditionResults], name: &str, alpha_deg: f64, mach: f64)
 }
 
 /// Each exported function: its DATCOM column and the sample's fields it is multiplied by.
-const FUNCTIONS: [(&str, &str, &[&str]); 15] = [
-    ("CL", "CL", &["qbar_psf", "sw_sqft"]),
-    (
-        "CLq",
-        "CLQ",
-        &["qbar_psf", "sw_sqft", "ci2vel", "q_rad_sec"],
-    ),
-    (
-        "CLadot",
-        "CLAD",
-        &["qbar_psf", "sw_sqft", "ci2vel", "alphadot_rad_sec"],
-    ),
-    ("CD", "CD", &["qbar_psf", "sw_sqft"]),
-    ("CYb", "CYB", &["qbar_psf", "sw_sqft", "beta_rad"]),
-    (
-        "CYp",
-        "CYP",
-        &["qbar_psf", "sw_sqft", "bi2vel", "p_rad_sec"],
-    ),
-    ("Clb", "CLB", &["qbar_psf", "sw_sqft", "bw_ft", "beta_rad"]),
-    (
-        "Clp",
-        "CLP",
-        &["qbar_psf", "sw_sqft", "bw_ft", "bi2vel", "p_rad_sec"],
-    ),
-    (
-        "Clr",
-        "CLR",
-        &["qbar_psf", "sw_sqft", "bw_ft", "bi2vel", "r_rad_sec"],
-    ),
-    ("Cm", "CM", &["qbar_psf", "sw_sqft", "cbarw_ft"]),
-    (
-        "Cmq",
-        "CMQ",
-        &["qbar_psf", "sw_sqft", "cbarw_ft", "ci2vel", "q_rad_sec"],
-    ),
+const FUNCTIONS: [(&str, &str, &str); 15] = [
+    ("CL", "CL", "qbar_psf sw_sqft"),
+    ("CLq", "CLQ", "qbar_psf sw_sqft ci2vel q_rad_sec"),
+    ("CLadot", "CLAD", "qbar_psf sw_sqft ci2vel alphadot_rad_sec"),
+    ("CD", "CD", "qbar_psf sw_sqft"),
+    ("CYb", "CYB", "qbar_psf sw_sqft beta_rad"),
+    ("CYp", "CYP", "qbar_psf sw_sqft bi2vel p_rad_sec"),
+    ("Clb", "CLB", "qbar_psf sw_sqft bw_ft beta_rad"),
+    ("Clp", "CLP", "qbar_psf sw_sqft bw_ft bi2vel p_rad_sec"),
+    ("Clr", "CLR", "qbar_psf sw_sqft bw_ft bi2vel r_rad_sec"),
+    ("Cm", "CM", "qbar_psf sw_sqft cbarw_ft"),
+    ("Cmq", "CMQ", "qbar_psf sw_sqft cbarw_ft ci2vel q_rad_sec"),
     (
         "Cmadot",
         "CMAD",
-        &[
-            "qbar_psf",
-            "sw_sqft",
-            "cbarw_ft",
-            "ci2vel",
-            "alphadot_rad_sec",
-        ],
+        "qbar_psf sw_sqft cbarw_ft ci2vel alphadot_rad_sec",
     ),
-    ("Cnb", "CNB", &["qbar_psf", "sw_sqft", "bw_ft", "beta_rad"]),
-    (
-        "Cnp",
-        "CNP",
-        &["qbar_psf", "sw_sqft", "bw_ft", "bi2vel", "p_rad_sec"],
-    ),
-    (
-        "Cnr",
-        "CNR",
-        &["qbar_psf", "sw_sqft", "bw_ft", "bi2vel", "r_rad_sec"],
-    ),
+    ("Cnb", "CNB", "qbar_psf sw_sqft bw_ft beta_rad"),
+    ("Cnp", "CNP", "qbar_psf sw_sqft bw_ft bi2vel p_rad_sec"),
+    ("Cnr", "CNR", "qbar_psf sw_sqft bw_ft bi2vel r_rad_sec"),
 ];
 
 fn field(sample: &serde_json::Value, key: &str) -> f64 {
@@ -241,7 +181,7 @@ fn compare_sample(conditions: &[&ConditionResults], s: &serde_json::Value) -> Ve
         let Some(value) = functions[name].as_f64() else {
             continue;
         };
-        let scale: f64 = factors.iter().map(|f| field(s, f)).product();
+        let scale: f64 = factors.split_whitespace().map(|f| field(s, f)).product();
         if scale.abs() < 1e-9 {
             continue;
         }

@@ -138,30 +138,9 @@ impl Column {
     }
 
     /// The column's values, or why there are none.
-    fn values(self, c: &ConditionResults) -> Result<&Vec<Option<f64>>, &'static str> {
-        let s = &c.static_coefficients;
-        let dynamic = || {
-            c.dynamic
-                .as_ref()
-                .ok_or("no DAMP card: dynamic derivatives not computed")
-        };
-        Ok(match self {
-            Column::Cl => &s.cl,
-            Column::Cd => &s.cd,
-            Column::Cm => &s.cm,
-            Column::Cyb => &s.cyb,
-            Column::Cnb => &s.cnb,
-            Column::Clb => &s.clb,
-            Column::Clq => &dynamic()?.clq,
-            Column::Cmq => &dynamic()?.cmq,
-            Column::Clad => &dynamic()?.clad,
-            Column::Cmad => &dynamic()?.cmad,
-            Column::Clp => &dynamic()?.clp,
-            Column::Cyp => &dynamic()?.cyp,
-            Column::Cnp => &dynamic()?.cnp,
-            Column::Cnr => &dynamic()?.cnr,
-            Column::Clr => &dynamic()?.clr,
-        })
+    fn values(self, c: &ConditionResults) -> Result<&[Option<f64>], &'static str> {
+        c.column(self.label())
+            .ok_or("no DAMP card: dynamic derivatives not computed")
     }
 
     fn no_method(self, c: &ConditionResults) -> bool {

@@ -96,28 +96,6 @@ const FIGURES: [(&str, Quantity, Quantity); 17] = [
     ("clr", derivative("CLR", "Clr"), Quantity::Alpha),
 ];
 
-fn column<'a>(c: &'a ConditionResults, name: &str) -> Option<&'a [Option<f64>]> {
-    let s = &c.static_coefficients;
-    let d = c.dynamic.as_ref();
-    Some(match name {
-        "CL" => &s.cl,
-        "CD" => &s.cd,
-        "CM" => &s.cm,
-        "CYB" => &s.cyb,
-        "CNB" => &s.cnb,
-        "CLB" => &s.clb,
-        "CLQ" => &d?.clq,
-        "CMQ" => &d?.cmq,
-        "CLAD" => &d?.clad,
-        "CMAD" => &d?.cmad,
-        "CLP" => &d?.clp,
-        "CYP" => &d?.cyp,
-        "CNP" => &d?.cnp,
-        "CNR" => &d?.cnr,
-        _ => &d?.clr,
-    })
-}
-
 impl Quantity {
     fn label(self, deriv: DerivUnit) -> String {
         match self {
@@ -145,7 +123,7 @@ impl Quantity {
             Quantity::Column {
                 name, per_angle, ..
             } => {
-                let raw = column(c, name).unwrap_or(&[]);
+                let raw = c.column(name).unwrap_or(&[]);
                 let view = |v: Option<f64>| {
                     let v = v.filter(|x| x.is_finite());
                     if per_angle {
