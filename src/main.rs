@@ -67,7 +67,54 @@ enum RunFormat {
 }
 
 #[derive(Subcommand)]
+enum ExportTarget {
+    /// A JSBSim `<aerodynamics>` section (and, with --aircraft, a whole minimal aircraft):
+    /// one aero/coefficient function per DATCOM term, tables over alpha (and Mach), in feet
+    /// and pounds (docs/jsbsim.md).
+    Jsbsim(JsbsimExport),
+}
+
+/// The options of `export jsbsim`.
+#[derive(clap::Args)]
+struct JsbsimExport {
+    deck: PathBuf,
+    /// Write the `<aerodynamics>` file here (standard output when neither -o nor
+    /// --aircraft is given).
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// Also write a whole aircraft, DIR/<name>/<name>.xml, that JSBSim can load.
+    #[arg(long, value_name = "DIR")]
+    aircraft: Option<PathBuf>,
+    /// The aircraft's name (default: the deck's file name without extension).
+    #[arg(long)]
+    name: Option<String>,
+    /// The case of the deck to export (1-based).
+    #[arg(long, default_value_t = 1)]
+    case: usize,
+    /// Weight, lbf, when the deck gives no WT (or to replace it).
+    #[arg(long, value_name = "LBF")]
+    weight_lbf: Option<f64>,
+    /// Ixx,Iyy,Izz about the c.g., slug·ft² (default: an estimate, see docs/jsbsim.md).
+    #[arg(long, value_name = "IXX,IYY,IZZ", value_delimiter = ',')]
+    inertia_slugft2: Option<Vec<f64>>,
+}
+
+#[derive(Subcommand)]
 enum Command {
+    /// SVG figures of every case: CL, CD, Cm against alpha, the drag polar, Cm against CL, the
+    /// sideslip and dynamic derivatives against alpha; one series per flight condition.
+    Plot {
+        deck: PathBuf,
+        /// Directory of the figures: DIR/<deck>-<figure>.svg (<deck>-case<N>-<figure>.svg
+        /// when the deck has several cases).
+        #[arg(short = 'o', long = "output", value_name = "DIR")]
+        output: PathBuf,
+    },
+    /// Export a case for another tool.
+    Export {
+        #[command(subcommand)]
+        target: ExportTarget,
+    },
     /// Check decks and print every problem (exit 0 clean or warnings only, 1 if errors).
     Check {
         /// Deck files.
@@ -572,9 +619,147 @@ fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
     }
 }
 
+fn export_jsbsim(o: JsbsimExport) -> ExitCode {
+    use datcom::report::jsbsim::{self, KGM2_PER_SLUGFT2, N_PER_LBF};
+    let inertia_kgm2 = match o.inertia_slugft2.as_deref() {
+        None => None,
+        Some(&[ixx, iyy, izz]) => Some([ixx, iyy, izz].map(|v| v * KGM2_PER_SLUGFT2)),
+        Some(other) => {
+            eprintln!(
+                "datcom-rs: --inertia-slugft2 takes three values IXX,IYY,IZZ; {} given",
+                other.len()
+            );
+            return ExitCode::from(2);
+        }
+    };
+    let d = match load(&o.deck) {
+        Ok(d) => d,
+        Err(code) => return code,
+    };
+    print_diagnostics(&d, false, &mut std::io::stderr().lock());
+    if d.has_errors() {
+        eprintln!(
+            "datcom-rs: {} has {} error(s); nothing exported",
+            o.deck.display(),
+            d.error_count()
+        );
+        return ExitCode::from(1);
+    }
+    let Some(case) = o.case.checked_sub(1).and_then(|i| d.cases.get(i)) else {
+        eprintln!(
+            "datcom-rs: {}",
+            jsbsim::ExportError::NoSuchCase {
+                case: o.case,
+                count: d.cases.len()
+            }
+        );
+        return ExitCode::from(2);
+    };
+    let results = datcom::results::run_case(case);
+    let model = match jsbsim::model(&o.deck.display().to_string(), &results) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("datcom-rs: {}: {e}", o.deck.display());
+            return ExitCode::from(1);
+        }
+    };
+    let write = |path: &Path, text: &str| -> Result<(), ExitCode> {
+        let made = path
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .map_or(Ok(()), std::fs::create_dir_all);
+        made.and_then(|()| std::fs::write(path, text))
+            .map_err(|e| {
+                eprintln!("datcom-rs: cannot write {}: {e}", path.display());
+                ExitCode::from(2)
+            })?;
+        eprintln!("wrote {}", path.display());
+        Ok(())
+    };
+    if let Some(dir) = &o.aircraft {
+        let name = o.name.clone().unwrap_or_else(|| {
+            o.deck
+                .file_stem()
+                .map_or("aircraft".into(), |s| s.to_string_lossy().into_owned())
+        });
+        let options = jsbsim::AircraftOptions {
+            name: name.clone(),
+            weight_n: o.weight_lbf.map(|w| w * N_PER_LBF),
+            inertia_kgm2,
+        };
+        let xml = match jsbsim::aircraft_xml(&model, case, &options) {
+            Ok(x) => x,
+            Err(e) => {
+                eprintln!("datcom-rs: {}: {e}", o.deck.display());
+                return ExitCode::from(1);
+            }
+        };
+        if let Err(code) = write(&dir.join(&name).join(format!("{name}.xml")), &xml) {
+            return code;
+        }
+    }
+    let xml = jsbsim::aerodynamics_xml(&model);
+    match (&o.output, &o.aircraft) {
+        (Some(path), _) => write(path, &xml).err().unwrap_or(ExitCode::SUCCESS),
+        (None, Some(_)) => ExitCode::SUCCESS,
+        (None, None) => {
+            if std::io::stdout().lock().write_all(xml.as_bytes()).is_err() {
+                return ExitCode::from(2);
+            }
+            ExitCode::SUCCESS
+        }
+    }
+}
+
+fn plot(deck: &Path, dir: &Path) -> ExitCode {
+    let d = match load(deck) {
+        Ok(d) => d,
+        Err(code) => return code,
+    };
+    print_diagnostics(&d, false, &mut std::io::stderr().lock());
+    let results = datcom::run(&d);
+    let stem = deck
+        .file_stem()
+        .map_or("deck".into(), |s| s.to_string_lossy());
+    let several = results.cases.len() > 1;
+    let mut code = ExitCode::SUCCESS;
+    if let Err(e) = std::fs::create_dir_all(dir) {
+        eprintln!("datcom-rs: cannot create {}: {e}", dir.display());
+        return ExitCode::from(2);
+    }
+    for case in &results.cases {
+        let figures = match datcom::report::plot::figures(case) {
+            Ok(f) => f,
+            Err(e) => {
+                eprintln!("datcom-rs: {}: {e}", deck.display());
+                code = ExitCode::from(1);
+                continue;
+            }
+        };
+        for f in figures {
+            let file = if several {
+                format!("{stem}-case{}-{}.svg", case.number, f.name)
+            } else {
+                format!("{stem}-{}.svg", f.name)
+            };
+            let path = dir.join(file);
+            if let Err(e) = std::fs::write(&path, &f.svg) {
+                eprintln!("datcom-rs: cannot write {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+            eprintln!("wrote {}", path.display());
+        }
+    }
+    code
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
+        Command::Plot { deck, output } => plot(&deck, &output),
+        Command::Export {
+            target: ExportTarget::Jsbsim(options),
+        } => export_jsbsim(options),
         Command::Check { decks, notes } => check(&decks, notes),
         Command::Import { listing, format } => {
             let text = match std::fs::read(&listing) {

@@ -179,6 +179,48 @@ pub struct CaseResults {
     pub warnings: Vec<String>,
 }
 
+impl ConditionResults {
+    /// A coefficient column by its name on the original's pages (`CL`, `CYB`, `CLP` ...);
+    /// `None` for a dynamic column without DAMP or an unknown name.
+    pub fn column(&self, name: &str) -> Option<&[Option<f64>]> {
+        let s = &self.static_coefficients;
+        Some(match name {
+            "CD" => &s.cd,
+            "CL" => &s.cl,
+            "CM" => &s.cm,
+            "CN" => &s.cn,
+            "CA" => &s.ca,
+            "XCP" => &s.xcp,
+            "CLA" => &s.cla,
+            "CMA" => &s.cma,
+            "CYB" => &s.cyb,
+            "CNB" => &s.cnb,
+            "CLB" => &s.clb,
+            _ => {
+                let d = self.dynamic.as_ref()?;
+                let (_, column) = d.columns().into_iter().find(|(n, _)| *n == name)?;
+                column
+            }
+        })
+    }
+}
+
+impl CaseResults {
+    /// For each flight condition, its last configuration entry: the case's most complete
+    /// configuration (with BUILD the component configurations come first), in condition order.
+    pub fn most_complete(&self) -> Vec<&ConditionResults> {
+        let mut last: Vec<&ConditionResults> = Vec::new();
+        let key = |x: &ConditionResults| (x.condition.mach_index, x.condition.altitude_index);
+        for c in &self.conditions {
+            match last.last_mut() {
+                Some(l) if key(l) == key(c) => *l = c,
+                _ => last.push(c),
+            }
+        }
+        last
+    }
+}
+
 /// Results of every case of a deck.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Results {

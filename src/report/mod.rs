@@ -7,9 +7,11 @@
 pub mod compare;
 pub mod csv;
 pub mod for006;
+pub mod jsbsim;
 pub mod json;
 pub mod legacy;
 pub mod percent_error;
+pub mod plot;
 pub mod text;
 
 use crate::case::units::from_si;
