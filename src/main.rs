@@ -211,6 +211,18 @@ enum Command {
         /// Write the analysis as JSON to this file.
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
+        /// Write SVG plots of measured, predicted and corrected curves into this folder.
+        #[arg(long, value_name = "DIR")]
+        plots: Option<PathBuf>,
+        /// Compare only measured angles of attack from MIN to MAX deg (after --alpha-offset),
+        /// e.g. the attached flow below stall.
+        #[arg(
+            long,
+            value_name = "MIN,MAX",
+            value_delimiter = ',',
+            allow_hyphen_values = true
+        )]
+        alpha_range: Option<Vec<f64>>,
         /// Subtract this from the measured angles of attack (a known alpha-reference offset).
         #[arg(
             long,
@@ -467,6 +479,8 @@ struct DiscrepancyArgs {
     case: usize,
     condition: usize,
     json: Option<PathBuf>,
+    plots: Option<PathBuf>,
+    alpha_range: Option<Vec<f64>>,
     alpha_offset: f64,
     sigma: Vec<String>,
     reynolds: ReynoldsRule,
@@ -520,8 +534,20 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
         Err(c) => return c,
     };
     let name = a.measured.display().to_string();
-    let options = dy::Options::default();
-    let (text, json) = if a.flight {
+    let alpha_range_deg = match a.alpha_range.as_deref() {
+        None => None,
+        Some([lo, hi]) if lo <= hi => Some((*lo, *hi)),
+        Some(r) => {
+            return fail(&format!(
+                "--alpha-range: expected MIN,MAX with MIN <= MAX, found {r:?}"
+            ))
+        }
+    };
+    let options = dy::Options {
+        alpha_range_deg,
+        ..dy::Options::default()
+    };
+    let (text, json, figures) = if a.flight {
         let input: dy::flight::AirframeInput = match &a.airframe {
             Some(f) => match read_text(f).map(|t| toml::from_str(&t)) {
                 Ok(Ok(i)) => i,
@@ -539,7 +565,10 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
             Err(e) => return fail(&e),
         };
         match dy::flight::analyse_flight(&prediction, &airframe, &record, &options) {
-            Ok(r) => (r.to_text(), serde_json::to_string_pretty(&r)),
+            Ok(r) => {
+                let figures = dy::plot::flight_figures(&record, &r);
+                (r.to_text(), serde_json::to_string_pretty(&r), figures)
+            }
             Err(e) => return fail(&e),
         }
     } else {
@@ -562,10 +591,30 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
             };
         }
         match dy::analyse_static(&prediction, &measured, &options) {
-            Ok(r) => (r.to_text(), serde_json::to_string_pretty(&r)),
+            Ok(r) => {
+                let figures =
+                    dy::plot::static_figures(&prediction, &measured, &r, options.beta_zero_deg);
+                (r.to_text(), serde_json::to_string_pretty(&r), figures)
+            }
             Err(e) => return fail(&e),
         }
     };
+    if let Some(dir) = &a.plots {
+        let figures = match figures {
+            Ok(f) => f,
+            Err(e) => return fail(&e),
+        };
+        for f in figures {
+            let path = dir.join(format!("{}.svg", f.name));
+            if let Err(e) =
+                std::fs::create_dir_all(dir).and_then(|()| std::fs::write(&path, &f.svg))
+            {
+                eprintln!("datcom-rs: cannot write {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+            eprintln!("wrote {}", path.display());
+        }
+    }
     if let Some(path) = &a.json {
         let body = match json {
             Ok(j) => j,
@@ -801,6 +850,8 @@ fn main() -> ExitCode {
             case,
             condition,
             json,
+            plots,
+            alpha_range,
             alpha_offset,
             sigma,
             reynolds,
@@ -813,6 +864,8 @@ fn main() -> ExitCode {
             case,
             condition,
             json,
+            plots,
+            alpha_range,
             alpha_offset,
             sigma,
             reynolds,

@@ -2,6 +2,8 @@
 //! example UAV plus hidden catalogue effects plus noise; and a flight with a hidden drag
 //! increase. The generators are `datcom::discrepancy::synthetic` (docs/discrepancy.md).
 
+mod common;
+
 use datcom::discrepancy::{
     analyse_static,
     effects::{EffectId, Prediction},
@@ -154,4 +156,172 @@ fn a_flight_with_hidden_drag_names_parasite_drag_and_the_airspeed_error_shrinks(
     );
     assert_eq!(ids.first(), Some(&EffectId::ParasiteDrag));
     assert!(before >= 3.0 * after, "airspeed RMS {before} -> {after}");
+}
+
+fn bin() -> std::process::Command {
+    std::process::Command::new(env!("CARGO_BIN_EXE_datcom-rs"))
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!(
+        "datcom-rs-discrepancy-{name}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The command line in flight mode: a synthetic flight with hidden drag written as CSV, the
+/// airframe values a deck lacks in a TOML file; the JSON names parasite_drag first and the
+/// plots are written.
+#[test]
+fn the_command_line_finds_hidden_drag_in_a_recorded_flight() {
+    let m = model();
+    let a = airframe(&m);
+    let hidden = [(EffectId::ParasiteDrag, &[0.02][..])];
+    let record = flight_record(&m.prediction, &hidden, &a, 20.0, 0.05, 60.0, 77).unwrap();
+    let dir = temp_dir("flight");
+    let flight = dir.join("flight.csv");
+    std::fs::write(&flight, record.to_csv()).unwrap();
+    let frame = dir.join("airframe.toml");
+    std::fs::write(
+        &frame,
+        "iyy_kgm2 = 1.2\ncl_de_per_rad = 0.4\ncm_de_per_rad = -1.2\n",
+    )
+    .unwrap();
+    let json = dir.join("out.json");
+    let plots = dir.join("plots");
+    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
+    let out = bin()
+        .args(["discrepancy", "--model", &deck, "--measured"])
+        .arg(&flight)
+        .arg("--flight")
+        .arg("--airframe")
+        .arg(&frame)
+        .arg("--json")
+        .arg(&json)
+        .arg("--plots")
+        .arg(&plots)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(v["effects"][0]["id"], "parasite_drag");
+    for key in ["rms_before", "rms_after", "confounded"] {
+        assert!(!v[key].is_null(), "no {key} in the JSON");
+    }
+    let svg = std::fs::read_to_string(plots.join("flight-airspeed_mps.svg")).unwrap();
+    for label in [
+        "recorded",
+        "simulated, prediction",
+        "simulated, with the effects",
+    ] {
+        assert!(svg.contains(label), "no {label} in the airspeed plot");
+    }
+}
+
+/// A static CSV through the command line: the JSON has the issue's shape and the plots
+/// carry the three series; a missing column is an error naming it.
+#[test]
+fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
+    let m = model();
+    let p = &m.prediction;
+    let hidden = [(EffectId::ParasiteDrag, typical(EffectId::ParasiteDrag))];
+    let refs: Vec<(EffectId, &[f64])> = hidden.iter().map(|(e, v)| (*e, v.as_slice())).collect();
+    let meas = static_measurement(p, &refs, &alphas(p), TUNNEL_NOISE, 5);
+    let dir = temp_dir("static");
+    let mut csv = String::from("alpha_deg,CL,CD,Cm\n");
+    for (k, a) in meas.alpha_deg.iter().enumerate() {
+        let v = |c: &str| meas.values[c][k].unwrap();
+        csv.push_str(&format!("{a},{},{},{}\n", v("CL"), v("CD"), v("Cm")));
+    }
+    let measured = dir.join("tunnel.csv");
+    std::fs::write(&measured, &csv).unwrap();
+    let json = dir.join("out.json");
+    let plots = dir.join("plots");
+    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
+    let out = bin()
+        .args(["discrepancy", "--model", &deck, "--measured"])
+        .arg(&measured)
+        .arg("--json")
+        .arg(&json)
+        .arg("--plots")
+        .arg(&plots)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(v["effects"][0]["id"], "parasite_drag");
+    assert!(v["effects"][0]["ci95"]["dCD0"].is_array());
+    let svg = std::fs::read_to_string(plots.join("discrepancy-cd.svg")).unwrap();
+    for label in ["measured", "predicted (DATCOM)", "corrected: parasite_drag"] {
+        assert!(svg.contains(label), "no {label} in the CD plot");
+    }
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "alpha,CL\n0,0.1\n").unwrap();
+    let out = bin()
+        .args(["discrepancy", "--model", &deck, "--measured"])
+        .arg(&bad)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no column alpha_deg"));
+}
+
+/// Issue 8, real data: the NASA Ultra Stick 120 tunnel tables against our DATCOM model
+/// (namelists/ultrastick120.dcm), with the tables' 2° alpha offset removed and below stall
+/// (docs/discrepancy-ultrastick120.md). The workflow names the pitching-moment offset, the
+/// parasite drag and the zero-lift shift, and every coefficient's RMS falls.
+#[test]
+fn the_ultrastick120_tunnel_data_name_the_documented_effects() {
+    let Some(dir) = common::shared_dir("data/ultrastick120", "discrepancy ultrastick120") else {
+        return;
+    };
+    let text = std::fs::read_to_string(dir.join("aero_static.csv")).unwrap();
+    let mut measured = datcom::discrepancy::data::read_measurement(&text, "aero_static.csv")
+        .unwrap()
+        .with_alpha_offset(2.0);
+    for (c, s) in [("CL", 0.005), ("CD", 0.001), ("Cm", 0.002)] {
+        measured = measured.with_sigma(c, s).unwrap();
+    }
+    let path = format!("{}/namelists/ultrastick120.dcm", env!("CARGO_MANIFEST_DIR"));
+    let deck = datcom::read_deck_file(std::path::Path::new(&path)).unwrap();
+    let m = from_deck(&deck, 1, 0).unwrap();
+    let options = Options {
+        alpha_range_deg: Some((-6.0, 10.5)),
+        ..Options::default()
+    };
+    let a = analyse_static(&m.prediction, &measured, &options).unwrap();
+    eprintln!("{}", a.to_text());
+    assert_eq!(
+        named(&a),
+        vec![
+            EffectId::Cm0Offset,
+            EffectId::ParasiteDrag,
+            EffectId::ZeroLiftShift
+        ]
+    );
+    let dcd0 = a.effects[1].parameters["dCD0"];
+    assert!((0.01..0.03).contains(&dcd0), "dCD0 {dcd0}");
+    for c in ["CL", "CD", "Cm"] {
+        assert!(
+            a.rms_after[c] < 0.5 * a.rms_before[c],
+            "{c}: {:?} {:?}",
+            a.rms_before,
+            a.rms_after
+        );
+    }
 }

@@ -514,7 +514,7 @@ pub fn analyse_flight(
             .collect(),
         effects,
         confounded: selection.confounded,
-        criterion: "BIC = n ln(RSS/n) + k ln n on the output errors, added when it falls by more than min_bic_drop",
+        criterion: "BIC = chi-square + k ln n on the output errors, added when it falls by more than min_bic_drop",
         selection: selection.trace.clone(),
         simulated_before: named(&ob),
         simulated_after: named(&oa),

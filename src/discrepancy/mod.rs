@@ -15,6 +15,7 @@ pub mod data;
 pub mod effects;
 pub mod fit;
 pub mod flight;
+pub mod plot;
 pub mod prediction;
 pub mod synthetic;
 
@@ -61,7 +62,7 @@ pub enum DiscrepancyError {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Options {
     /// An effect is added when it lowers the Bayesian information criterion
-    /// BIC = n ln(RSS/n) + k ln n by more than this (10: "very strong" evidence on the scale
+    /// BIC = χ² + k ln n by more than this (10: "very strong" evidence on the scale
     /// of Kass and Raftery, 1995; keeps false alarms on noise-only data near 0.1 % per
     /// candidate).
     pub min_bic_drop: f64,
@@ -70,12 +71,15 @@ pub struct Options {
     pub confound_bic: f64,
     /// Every k-th point (in alpha order) is held out of the selection and fit, to validate.
     pub holdout_every: usize,
-    /// At most this many effects.
+    /// At most this many effects (and never more parameters than half the residuals).
     pub max_effects: usize,
     /// Rows with |beta| at most this (deg) count as beta = 0 for the longitudinal fit.
     pub beta_zero_deg: f64,
     /// The candidates (default: the whole catalogue).
     pub candidates: Vec<EffectId>,
+    /// Only measured angles of attack within this range (deg) are compared (e.g. the attached
+    /// flow below stall, where DATCOM's methods hold); all when none.
+    pub alpha_range_deg: Option<(f64, f64)>,
 }
 
 impl Default for Options {
@@ -84,9 +88,10 @@ impl Default for Options {
             min_bic_drop: 10.0,
             confound_bic: 2.0,
             holdout_every: 4,
-            max_effects: 4,
+            max_effects: EffectId::ALL.len(),
             beta_zero_deg: 0.5,
             candidates: EffectId::ALL.to_vec(),
+            alpha_range_deg: None,
         }
     }
 }
@@ -272,8 +277,58 @@ fn starts(id: EffectId, alphas: &[f64]) -> Vec<Vec<f64>> {
     }
 }
 
+/// Whether the candidate `id` (the last effect of `fit`) differs from no effect at all: its
+/// amplitude parameter (every parameter but the stall onset's angle) lies outside the 95 %
+/// interval around its nominal value, |θ − θ₀| > 1.96 SE with the covariance scaled by the
+/// reduced χ² (so that a misfit the model cannot explain widens the interval). An effect
+/// whose interval contains "no effect" is not named, however much it lowers χ².
+fn departs_from_nominal(id: EffectId, fit: &fit::Fit) -> bool {
+    let p = id.parameters().len();
+    let first = fit.parameters.len() - p;
+    let nominal = id.nominal();
+    (0..p)
+        .filter(|&j| !(id == EffectId::StallOnset && j == 0))
+        .any(|j| {
+            let (v, se) = (fit.parameters[first + j], fit.standard_errors[first + j]);
+            (v - nominal[j]).abs() > Z95 * se
+        })
+}
+
+/// Two effects whose fitted parameters correlate beyond this are confounded on the data (the
+/// data cannot tell them apart: their estimates trade off against each other).
+pub const CONFOUNDED_CORRELATION: f64 = 0.95;
+
+/// The effect of `chosen` whose parameters correlate with `new`'s beyond
+/// [`CONFOUNDED_CORRELATION`] in `fit` (parameters: `nn` nuisance, then `chosen`'s, then
+/// `new`'s).
+fn confounded_with(
+    chosen: &[EffectId],
+    new: EffectId,
+    fit: &fit::Fit,
+    nn: usize,
+) -> Option<EffectId> {
+    let start_new = nn + chosen.iter().map(|e| e.parameters().len()).sum::<usize>();
+    let mut k = nn;
+    for id in chosen {
+        for a in k..k + id.parameters().len() {
+            for b in start_new..start_new + new.parameters().len() {
+                if fit.correlation[(a, b)].abs() > CONFOUNDED_CORRELATION {
+                    return Some(*id);
+                }
+            }
+        }
+        k += id.parameters().len();
+    }
+    None
+}
+
+/// A stall onset needs this many measured angles beyond it: its curvature (and the onset
+/// itself) is not identifiable from fewer.
+pub const MIN_ANGLES_PAST_STALL_ONSET: usize = 3;
+
 /// Whether a fitted effect is physically admissible on data spanning `alphas`: a stall onset
-/// inside the upper half of the measured angles with a loss (not a gain) of lift, a positive
+/// inside the upper half of the measured angles, with at least
+/// [`MIN_ANGLES_PAST_STALL_ONSET`] of them beyond it and a loss (not a gain) of lift, a positive
 /// lift-slope scale and a non-negative tail efficiency. Outside, the effect's shape is only a
 /// generic curve fit (a "stall" below the data is a quadratic in alpha) and it is not offered.
 fn admissible(id: EffectId, p: &[f64], alphas: &[f64]) -> bool {
@@ -283,7 +338,10 @@ fn admissible(id: EffectId, p: &[f64], alphas: &[f64]) -> bool {
             (a.min(*x), b.max(*x))
         });
     match id {
-        EffectId::StallOnset => p[0] >= 0.5 * (lo + hi) && p[0] < hi && p[1] > 0.0,
+        EffectId::StallOnset => {
+            let above = alphas.iter().filter(|a| **a > p[0]).count();
+            p[0] >= 0.5 * (lo + hi) && above >= MIN_ANGLES_PAST_STALL_ONSET && p[1] > 0.0
+        }
         EffectId::LiftSlopeScale => p[0] > 0.0,
         EffectId::TailEfficiency => p[0] >= 0.0,
         _ => true,
@@ -305,12 +363,28 @@ pub(crate) struct Selection {
 /// raised it), best first.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Step {
-    pub candidates: Vec<(EffectId, f64)>,
+    pub candidates: Vec<Tried>,
 }
 
-fn bic(rss: f64, n: usize, k: usize) -> f64 {
-    let n = n as f64;
-    n * (rss.max(f64::MIN_POSITIVE) / n).ln() + k as f64 * n.ln()
+/// A candidate tried at a step.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Tried {
+    pub effect: EffectId,
+    /// Fall of BIC with the candidate added (negative: it rises).
+    pub bic_drop: f64,
+    /// Its amplitude lies outside the 95 % interval around "no effect"; only such candidates
+    /// can be chosen.
+    pub departs_from_nominal: bool,
+}
+
+/// The Bayesian information criterion of a fit with χ² = Σ((model − measured)/σ)² over `n`
+/// residuals and `k` parameters, the noise σ known (given, or estimated from the data's own
+/// scatter before any model is fitted): −2 ln L + k ln n = χ² + k ln n up to a constant.
+/// With the noise known, an effect that removes a gap in one coefficient counts in full even
+/// where another coefficient's gap remains (with the noise scale fitted, n ln(RSS/n), the
+/// larger gap would hide it).
+fn bic(chi_square: f64, n: usize, k: usize) -> f64 {
+    chi_square + k as f64 * (n as f64).ln()
 }
 
 /// Forward stepwise selection by BIC (see [`Options`]): at each step every remaining
@@ -342,7 +416,12 @@ where
         let ids: Vec<EffectId> = model.iter().map(|(e, _)| *e).collect();
         let base: Vec<f64> = model.iter().flat_map(|(_, p)| p.clone()).collect();
         let mut trials: Vec<(EffectId, fit::Fit)> = Vec::new();
-        for c in candidates.iter().filter(|c| !ids.contains(c)) {
+        let used: usize = ids.iter().map(|e| e.parameters().len()).sum();
+        for c in candidates
+            .iter()
+            .filter(|c| !ids.contains(c))
+            .filter(|c| 2 * (used + c.parameters().len()) <= n)
+        {
             let mut with: Vec<EffectId> = ids.clone();
             with.push(*c);
             let best = starts(*c, alphas)
@@ -369,17 +448,25 @@ where
         let k_of = |id: EffectId| -> usize {
             ids.iter().map(|e| e.parameters().len()).sum::<usize>() + id.parameters().len()
         };
-        let mut scored: Vec<(f64, EffectId, fit::Fit)> = trials
+        let mut all: Vec<(f64, EffectId, fit::Fit)> = trials
             .into_iter()
             .map(|(id, f)| (bic(f.chi_square, n, k_of(id)), id, f))
             .collect();
-        scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+        all.sort_by(|a, b| a.0.total_cmp(&b.0));
         trace.push(Step {
-            candidates: scored
+            candidates: all
                 .iter()
-                .map(|(b, id, _)| (*id, current_bic - b))
+                .map(|(b, id, f)| Tried {
+                    effect: *id,
+                    bic_drop: current_bic - b,
+                    departs_from_nominal: departs_from_nominal(*id, f),
+                })
                 .collect(),
         });
+        let scored: Vec<(f64, EffectId, fit::Fit)> = all
+            .into_iter()
+            .filter(|(_, id, f)| departs_from_nominal(*id, f))
+            .collect();
         let Some((best_bic, best_id, best_fit)) = scored.first().cloned() else {
             break;
         };
@@ -393,6 +480,13 @@ where
                 confounded.push(vec![best_id, *runner_id]);
                 break;
             }
+        }
+        // A new effect whose estimate is nearly a copy of an effect already chosen (their
+        // parameters correlate beyond CONFOUNDED_CORRELATION) is confounded with it on these
+        // data: reported, not added.
+        if let Some(other) = confounded_with(&ids, best_id, &best_fit, nn) {
+            confounded.push(vec![other, best_id]);
+            break;
         }
         let p_total = best_fit.parameters.len() - nn;
         let k_new = best_id.parameters().len();
@@ -620,6 +714,11 @@ pub fn analyse_static(
     );
     let rows: Vec<usize> = (0..measured.alpha_deg.len())
         .filter(|&r| measured.beta_deg[r].abs() <= options.beta_zero_deg)
+        .filter(|&r| {
+            options
+                .alpha_range_deg
+                .is_none_or(|(a, b)| (a..=b).contains(&measured.alpha_deg[r]))
+        })
         .collect();
     let outside = rows
         .iter()
@@ -704,7 +803,7 @@ pub fn analyse_static(
             .map(|(n, s)| (n.to_string(), s))
             .collect(),
         sigma_source,
-        criterion: "BIC = n ln(RSS/n) + k ln n, added when it falls by more than min_bic_drop",
+        criterion: "BIC = chi-square + k ln n, added when it falls by more than min_bic_drop",
         selection: selection.trace,
         warnings,
     })
@@ -740,11 +839,26 @@ fn effect_lines(effects: &[ChosenEffect], out: &mut String) {
 }
 
 fn trace_lines(steps: &[Step], out: &mut String) {
-    for (k, step) in steps.iter().enumerate() {
+    for (k, step) in steps
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| !s.candidates.is_empty())
+    {
         let tried: Vec<String> = step
             .candidates
             .iter()
-            .map(|(id, drop)| format!("{} {drop:.1}", id.name()))
+            .map(|t| {
+                format!(
+                    "{} {:.1}{}",
+                    t.effect.name(),
+                    t.bic_drop,
+                    if t.departs_from_nominal {
+                        ""
+                    } else {
+                        " (interval includes no effect)"
+                    }
+                )
+            })
             .collect();
         out.push_str(&format!(
             "step {}: BIC falls by {}\n",
@@ -799,11 +913,15 @@ impl Analysis {
             map_line(&self.rms_before),
             map_line(&self.rms_after)
         ));
-        out.push_str(&format!(
-            "held-out points, RMS before: {}\nheld-out points, RMS after:  {}\n",
-            map_line(&self.validation_rms_before),
-            map_line(&self.validation_rms_after)
-        ));
+        if self.validation_rms_before.is_empty() {
+            out.push_str("held-out validation: not made (too few measured angles)\n");
+        } else {
+            out.push_str(&format!(
+                "held-out points, RMS before: {}\nheld-out points, RMS after:  {}\n",
+                map_line(&self.validation_rms_before),
+                map_line(&self.validation_rms_after)
+            ));
+        }
         for w in &self.warnings {
             out.push_str(&format!("warning: {w}\n"));
         }

@@ -35,12 +35,13 @@ pub struct Figure {
     pub svg: String,
 }
 
-/// A series: its label and its points, in pieces where values are missing.
-struct Series {
-    label: String,
-    pieces: Vec<Vec<(f64, f64)>>,
+/// A series: its label and its points, in pieces where values are missing (a piece of one
+/// point is a marker alone).
+pub(crate) struct Series {
+    pub(crate) label: String,
+    pub(crate) pieces: Vec<Vec<(f64, f64)>>,
     /// One value per configuration: a marker on the first angle only (where DATCOM gives it).
-    once: bool,
+    pub(crate) once: bool,
 }
 
 /// What a figure plots against what.
@@ -239,7 +240,7 @@ fn legend_position(
     }
 }
 
-fn draw(
+pub(crate) fn draw(
     title: &str,
     x_label: &str,
     y_label: &str,
