@@ -34,12 +34,38 @@ enum ReynoldsRule {
     Original,
 }
 
-impl ReynoldsRule {
-    fn rule(self) -> datcom::case::SectionReynolds {
-        match self {
-            ReynoldsRule::Flight => datcom::case::SectionReynolds::Flight,
-            ReynoldsRule::Original => datcom::case::SectionReynolds::Original,
-        }
+#[derive(Clone, Copy, ValueEnum)]
+enum FiveDigitRule {
+    Naca,
+    Original,
+}
+
+/// The rules that differ between the library and the original program (docs/differences.md):
+/// the library's by default, the original's to reproduce its listings.
+#[derive(Clone, Copy, clap::Args)]
+struct Rules {
+    /// Reynolds number of the section methods when the deck gives no RNNUB: the flight
+    /// condition's (default), or the original program's fixed values (to reproduce its
+    /// listings).
+    #[arg(long, value_enum, default_value = "flight")]
+    reynolds: ReynoldsRule,
+    /// NACA 5-digit designations: NACA's definition (default), or as the original program
+    /// reads them (first digit = percent camber; to reproduce its listings; docs/sections.md).
+    #[arg(long = "five-digit", value_enum, default_value = "naca")]
+    five_digit: FiveDigitRule,
+}
+
+impl Rules {
+    fn apply(self, deck: datcom::Deck) -> datcom::Deck {
+        use datcom::case::{FiveDigitReading, SectionReynolds};
+        deck.with_section_reynolds(match self.reynolds {
+            ReynoldsRule::Flight => SectionReynolds::Flight,
+            ReynoldsRule::Original => SectionReynolds::Original,
+        })
+        .with_five_digit_reading(match self.five_digit {
+            FiveDigitRule::Naca => FiveDigitReading::Naca,
+            FiveDigitRule::Original => FiveDigitReading::Original,
+        })
     }
 }
 
@@ -154,9 +180,8 @@ enum Command {
         reference: PathBuf,
         #[arg(long, value_enum, default_value = "text")]
         format: CompareFormat,
-        /// Reynolds number of the section methods for decks without RNNUB (see `run`).
-        #[arg(long, value_enum, default_value = "flight")]
-        reynolds: ReynoldsRule,
+        #[command(flatten)]
+        rules: Rules,
     },
     /// Percentage errors of a deck's derivatives against reference values: a reference file
     /// (TOML: hand calculation, published table; docs/validation.md) gives, per derivative,
@@ -169,9 +194,8 @@ enum Command {
         reference: PathBuf,
         #[arg(long, value_enum, default_value = "text")]
         format: ReportFormat,
-        /// Reynolds number of the section methods for decks without RNNUB (see `run`).
-        #[arg(long, value_enum, default_value = "flight")]
-        reynolds: ReynoldsRule,
+        #[command(flatten)]
+        rules: Rules,
     },
     /// Compare a prediction with measurements: residuals and their significance, the missing
     /// physical effects named from a catalogue (stepwise, BIC), fitted with 95 % intervals,
@@ -235,9 +259,8 @@ enum Command {
         /// sigma_<coef> columns, else estimated from the data).
         #[arg(long, value_name = "COEF=SIGMA,...", value_delimiter = ',')]
         sigma: Vec<String>,
-        /// Reynolds number of the section methods (see `run`).
-        #[arg(long, value_enum, default_value = "flight")]
-        reynolds: ReynoldsRule,
+        #[command(flatten)]
+        rules: Rules,
     },
     /// Run a deck: flight conditions and coefficients.
     Run {
@@ -247,11 +270,8 @@ enum Command {
         /// Write the output to DIR/<deck name>.<txt|json|csv> instead of standard output.
         #[arg(short = 'o', long = "output", value_name = "DIR")]
         output: Option<PathBuf>,
-        /// Reynolds number of the section methods when the deck gives no RNNUB: the flight
-        /// condition's (default), or the original program's fixed values (to reproduce its
-        /// listings).
-        #[arg(long, value_enum, default_value = "flight")]
-        reynolds: ReynoldsRule,
+        #[command(flatten)]
+        rules: Rules,
     },
 }
 
@@ -324,7 +344,7 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
 }
 
 /// A result in the JSON shape of `run`, from a deck, a JSON file or a listing.
-fn results_json(path: &Path, reynolds: ReynoldsRule) -> Result<serde_json::Value, ExitCode> {
+fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode> {
     let bytes = std::fs::read(path).map_err(|e| {
         eprintln!("datcom-rs: cannot read {}: {e}", path.display());
         ExitCode::from(2)
@@ -336,7 +356,7 @@ fn results_json(path: &Path, reynolds: ReynoldsRule) -> Result<serde_json::Value
     } else if text.contains("AUTOMATED STABILITY AND CONTROL METHODS") {
         datcom::report::json::listing_to_string(&text, &name)
     } else {
-        let deck = datcom::read_deck(&text, &name).with_section_reynolds(reynolds.rule());
+        let deck = rules.apply(datcom::read_deck(&text, &name));
         datcom::report::json::to_string(&datcom::run(&deck))
     };
     serde_json::from_str(&json).map_err(|e| {
@@ -345,16 +365,8 @@ fn results_json(path: &Path, reynolds: ReynoldsRule) -> Result<serde_json::Value
     })
 }
 
-fn compare(
-    ours: &Path,
-    reference: &Path,
-    format: CompareFormat,
-    reynolds: ReynoldsRule,
-) -> ExitCode {
-    let (a, b) = match (
-        results_json(ours, reynolds),
-        results_json(reference, reynolds),
-    ) {
+fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -> ExitCode {
+    let (a, b) = match (results_json(ours, rules), results_json(reference, rules)) {
         (Ok(a), Ok(b)) => (a, b),
         (Err(c), _) | (_, Err(c)) => return c,
     };
@@ -393,7 +405,7 @@ fn agreement_table(rows: &[datcom::report::compare::ColumnAgreement], markdown: 
     out
 }
 
-fn report(deck: &Path, reference: &Path, format: ReportFormat, reynolds: ReynoldsRule) -> ExitCode {
+fn report(deck: &Path, reference: &Path, format: ReportFormat, rules: Rules) -> ExitCode {
     use datcom::report::percent_error as pe;
     let text = match std::fs::read(reference) {
         Ok(b) => String::from_utf8_lossy(&b).into_owned(),
@@ -406,10 +418,7 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, reynolds: Reynold
         || text.contains("AUTOMATED STABILITY AND CONTROL METHODS");
     let out = if is_results {
         // A listing or a result: agreement per coefficient, as `compare`.
-        let (a, b) = match (
-            results_json(deck, reynolds),
-            results_json(reference, reynolds),
-        ) {
+        let (a, b) = match (results_json(deck, rules), results_json(reference, rules)) {
             (Ok(a), Ok(b)) => (a, b),
             (Err(c), _) | (_, Err(c)) => return c,
         };
@@ -429,7 +438,7 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, reynolds: Reynold
             }
         };
         let d = match load(deck) {
-            Ok(d) => d.with_section_reynolds(reynolds.rule()),
+            Ok(d) => rules.apply(d),
             Err(code) => return code,
         };
         print_diagnostics(&d, false, &mut std::io::stderr().lock());
@@ -483,7 +492,7 @@ struct DiscrepancyArgs {
     alpha_range: Option<Vec<f64>>,
     alpha_offset: f64,
     sigma: Vec<String>,
-    reynolds: ReynoldsRule,
+    rules: Rules,
 }
 
 fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
@@ -495,7 +504,7 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
     let (prediction, deck_model) = match (&a.model, &a.predicted) {
         (Some(deck), _) => {
             let d = match load(deck) {
-                Ok(d) => d.with_section_reynolds(a.reynolds.rule()),
+                Ok(d) => a.rules.apply(d),
                 Err(code) => return code,
             };
             print_diagnostics(&d, false, &mut std::io::stderr().lock());
@@ -833,14 +842,14 @@ fn main() -> ExitCode {
             ours,
             reference,
             format,
-            reynolds,
-        } => compare(&ours, &reference, format, reynolds),
+            rules,
+        } => compare(&ours, &reference, format, rules),
         Command::Report {
             deck,
             reference,
             format,
-            reynolds,
-        } => report(&deck, &reference, format, reynolds),
+            rules,
+        } => report(&deck, &reference, format, rules),
         Command::Discrepancy {
             model,
             predicted,
@@ -854,7 +863,7 @@ fn main() -> ExitCode {
             alpha_range,
             alpha_offset,
             sigma,
-            reynolds,
+            rules,
         } => discrepancy(&DiscrepancyArgs {
             model,
             predicted,
@@ -868,7 +877,7 @@ fn main() -> ExitCode {
             alpha_range,
             alpha_offset,
             sigma,
-            reynolds,
+            rules,
         }),
         Command::Airfoil {
             file,
@@ -898,10 +907,10 @@ fn main() -> ExitCode {
             deck,
             format,
             output,
-            reynolds,
+            rules,
         } => {
             let d = match load(&deck) {
-                Ok(d) => d.with_section_reynolds(reynolds.rule()),
+                Ok(d) => rules.apply(d),
                 Err(code) => return code,
             };
             print_diagnostics(&d, false, &mut std::io::stderr().lock());

@@ -17,8 +17,8 @@ use std::path::{Path, PathBuf};
 
 use datcom::deck::cards::{AirfoilCard, NacaSeries, Surface};
 use datcom::geometry::section::{
-    naca, section_for, stations, user_defined, FiveDigitMeanLine, MeanLine, NacaSection,
-    SectionCoordinates, SectionError,
+    naca, section_for, stations, user_defined, MeanLine, NacaSection, SectionCoordinates,
+    SectionError,
 };
 
 /// The listing prints F8.5: one unit of the last digit. The original computes in REAL*4 and we
@@ -178,47 +178,14 @@ const ALL_COLUMNS: [usize; 7] = [0, 1, 2, 3, 4, 5, 6];
 /// The station and thickness columns, which the 5-digit mean-line difference leaves alone.
 const STATION_AND_THICKNESS: [usize; 2] = [4, 6];
 
-/// The root m of p = m (1 - sqrt(m/3)) (the original solves the same cubic in COORD5).
-fn five_digit_junction(p: f64) -> f64 {
-    let (mut lo, mut hi) = (p, 1.0);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid * (1.0 - (mid / 3.0).sqrt()) < p {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
 /// The documented difference on a 5-digit card: the original's mean line (COORD5, CORD5M;
 /// docs/sections.md), its maximum camber the first digit in percent at p = second digit / 20,
-/// with the standard line whatever the third digit. Combined with our thickness of the same
-/// digits, it must give the printed table.
+/// with the standard line whatever the third digit: the library's
+/// `FiveDigitReading::Original`. Combined with our thickness of the same digits, it must give
+/// the printed table.
 fn as_the_original_reads_five_digits(card: &AirfoilCard) -> NacaSection {
-    let d: Vec<f64> = card
-        .designation
-        .bytes()
-        .filter(u8::is_ascii_digit)
-        .map(|b| f64::from(b - b'0'))
-        .collect();
-    let (camber, p) = (d[0] / 100.0, d[1] / 20.0);
-    let m = five_digit_junction(p);
-    let k1 = 6.0 * camber / (p.powi(3) - 3.0 * m * p * p + m * m * (3.0 - m) * p);
-    // Our thickness for the same digits: the third digit set to 0 makes the designation NACA's.
-    let mut digits = card.designation.clone();
-    digits.replace_range(2..3, "0");
-    let ours = NacaSection::parse(NacaSeries::Five, &digits).expect("thickness digits");
-    NacaSection {
-        title: format!("NACA {}", card.designation.replace('-', " - ")),
-        mean_line: MeanLine::FiveDigit(FiveDigitMeanLine {
-            m,
-            k1,
-            k2_over_k1: 0.0,
-        }),
-        ..ours
-    }
+    NacaSection::from_card_read(card, datcom::case::FiveDigitReading::Original)
+        .expect("a 5-digit card")
 }
 
 #[test]

@@ -249,6 +249,20 @@ pub enum SectionReynolds {
     Original,
 }
 
+/// How a NACA 5-digit designation is read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FiveDigitReading {
+    /// NACA's definition: the first digit is the design lift coefficient in 0.15 steps, the
+    /// mean line's camber follows from it (2.0 % nominal, 1.84 % exactly, for a 230 line;
+    /// docs/sections.md).
+    #[default]
+    Naca,
+    /// As the original program: the first digit is the maximum camber in percent, the standard
+    /// line whatever the third digit (COORD5, CORD5M). For reproducing old listings.
+    Original,
+}
+
 /// One case of a deck, typed and in SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Case {
@@ -261,6 +275,8 @@ pub struct Case {
     pub deriv: DerivUnit,
     /// Reynolds number rule of the section methods (see [`SectionReynolds`]).
     pub section_reynolds: SectionReynolds,
+    /// How NACA 5-digit designations are read (see [`FiveDigitReading`]).
+    pub five_digit: FiveDigitReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -303,6 +319,21 @@ impl Deck {
             c.section_reynolds = rule;
         }
         self
+    }
+
+    /// The same deck with every case reading NACA 5-digit designations by `reading`.
+    pub fn with_five_digit_reading(mut self, reading: FiveDigitReading) -> Deck {
+        for c in &mut self.cases {
+            c.five_digit = reading;
+        }
+        self
+    }
+
+    /// The same deck with the original program's rules for both (its section Reynolds number
+    /// and its 5-digit reading), to reproduce its listings.
+    pub fn with_original_rules(self) -> Deck {
+        self.with_section_reynolds(SectionReynolds::Original)
+            .with_five_digit_reading(FiveDigitReading::Original)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -582,6 +613,7 @@ impl Case {
             scale,
             deriv: raw.cards.deriv.unwrap_or_default(),
             section_reynolds: SectionReynolds::default(),
+            five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),
             reference: Reference {

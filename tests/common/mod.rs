@@ -118,3 +118,16 @@ pub fn check_chart_spots<'a>(ids: impl IntoIterator<Item = &'a str>, spots: Spot
         assert!(l.warnings.is_empty(), "{id} at {args:?}: {:?}", l.warnings);
     }
 }
+
+/// `deck` under a section rule as the oracle tests tally it: with
+/// `SectionReynolds::Original`, the original program's rules (its section Reynolds number and
+/// its reading of NACA 5-digit designations, `Deck::with_original_rules`); else the library's.
+pub fn under_rule(
+    deck: datcom::case::Deck,
+    rule: datcom::case::SectionReynolds,
+) -> datcom::case::Deck {
+    match rule {
+        datcom::case::SectionReynolds::Original => deck.with_original_rules(),
+        other => deck.with_section_reynolds(other),
+    }
+}

@@ -55,6 +55,6 @@ pub fn section_for(
             .iter()
             .rev()
             .find(|a| a.surface == surface)
-            .map(naca),
+            .map(|card| NacaSection::from_card_read(card, case.five_digit)?.coordinates()),
     }
 }

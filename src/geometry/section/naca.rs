@@ -42,6 +42,28 @@ impl NacaSection {
         Self::parse(card.series, &card.designation)
     }
 
+    /// The section of a NACA card with 5-digit designations read by `reading` (other series
+    /// are the same either way).
+    pub fn from_card_read(
+        card: &AirfoilCard,
+        reading: crate::case::FiveDigitReading,
+    ) -> Result<Self, SectionError> {
+        let mut s = Self::from_card(card)?;
+        if reading == crate::case::FiveDigitReading::Original {
+            if let designation::Designation::FiveDigit { lift, position, .. } =
+                designation::parse(card.series, &card.designation)?
+            {
+                s.mean_line = original_five_digit_mean_line(lift, position);
+                s.warnings.push(format!(
+                    "NACA {}: 5-digit mean line read as the original program reads it ({lift} % camber at {} % chord), not NACA's (docs/sections.md)",
+                    card.designation,
+                    5 * position
+                ));
+            }
+        }
+        Ok(s)
+    }
+
     /// The section of `designation` in `series` (the text after the series on the card).
     pub fn parse(series: NacaSeries, designation: &str) -> Result<Self, SectionError> {
         let d = designation::parse(series, designation)?;
@@ -297,6 +319,35 @@ fn five_digit_mean_line(
         k1: k1 * design_cl / FIVE_DIGIT_TABLE_CL,
         k2_over_k1,
     }))
+}
+
+/// The original program's reading of a 5-digit mean line (COORD5, CORD5M; docs/sections.md,
+/// difference 1): maximum camber `camber_digit` percent at p = `position`/20, the standard line
+/// (no reflex) whatever the third digit; m is the root of p = m (1 − √(m/3)) (the 5-digit
+/// line's definition: zero slope at p) and k1 = 6 c / (p³ − 3 m p² + m² (3 − m) p), which
+/// makes the camber at p equal c.
+pub fn original_five_digit_mean_line(camber_digit: u8, position: u8) -> MeanLine {
+    if camber_digit == 0 || position == 0 {
+        return MeanLine::Symmetric;
+    }
+    let (camber, p) = (f64::from(camber_digit) / 100.0, f64::from(position) / 20.0);
+    // p(m) = m (1 − √(m/3)) increases on (0, 4/3): bisection from p to 4/3.
+    let (mut lo, mut hi) = (p, 4.0 / 3.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid * (1.0 - (mid / 3.0).sqrt()) < p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let m = 0.5 * (lo + hi);
+    let k1 = 6.0 * camber / (p.powi(3) - 3.0 * m * p * p + m * m * (3.0 - m) * p);
+    MeanLine::FiveDigit(FiveDigitMeanLine {
+        m,
+        k1,
+        k2_over_k1: 0.0,
+    })
 }
 
 /// The uniform-load mean line of extent `a` for a design lift coefficient of `lift` tenths.
