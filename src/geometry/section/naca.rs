@@ -463,6 +463,37 @@ mod tests {
         NacaSection::parse(series, text).unwrap()
     }
 
+    /// The original's reading of a 230 line: 2 % camber (the first digit) at p = 0.15 with
+    /// zero slope there, against NACA's 1.84 %; the reading changes 5-digit cards only.
+    #[test]
+    fn the_originals_five_digit_reading_puts_the_first_digit_as_percent_camber_at_p() {
+        let line = original_five_digit_mean_line(2, 3);
+        assert!(
+            (line.camber(0.15) - 0.02).abs() < 1e-9,
+            "{}",
+            line.camber(0.15)
+        );
+        assert!(line.slope(0.15).abs() < 1e-9);
+        let naca = section(NacaSeries::Five, "23012").mean_line;
+        assert!(
+            (naca.camber(0.15) - 0.0184).abs() < 2e-4,
+            "{}",
+            naca.camber(0.15)
+        );
+        let card = |series, designation: &str| AirfoilCard {
+            surface: crate::deck::cards::Surface::Wing,
+            series,
+            designation: designation.to_string(),
+            line: 1,
+        };
+        let read = |c: &AirfoilCard| {
+            NacaSection::from_card_read(c, crate::case::FiveDigitReading::Original).unwrap()
+        };
+        assert_eq!(read(&card(NacaSeries::Five, "23012")).mean_line, line);
+        let four = card(NacaSeries::Four, "2412");
+        assert_eq!(read(&four), NacaSection::from_card(&four).unwrap());
+    }
+
     #[test]
     fn a_third_digit_nacas_does_not_define_is_the_standard_line_with_a_warning() {
         let odd = section(NacaSeries::Five, "65415");
