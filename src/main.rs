@@ -202,66 +202,7 @@ enum Command {
     /// and the RMS before and after (docs/discrepancy.md). With --flight, the measurements are
     /// a recorded flight and the effects are fitted by output error through a longitudinal
     /// simulation.
-    Discrepancy {
-        /// A deck whose run is the prediction.
-        #[arg(
-            long,
-            value_name = "DECK",
-            required_unless_present = "predicted",
-            conflicts_with = "predicted"
-        )]
-        model: Option<PathBuf>,
-        /// A prediction table (CSV: alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail).
-        #[arg(long, value_name = "PRED.csv")]
-        predicted: Option<PathBuf>,
-        /// Measurements (CSV): static (alpha_deg, beta_deg, CL, CD, Cm, ..., sigma_<coef>) or,
-        /// with --flight, a time history (t, elevator_deg, thrust_n, airspeed_mps, alpha_deg,
-        /// pitch_rate_dps, theta_deg).
-        #[arg(long, value_name = "MEAS.csv")]
-        measured: PathBuf,
-        /// The measurements are a recorded flight.
-        #[arg(long)]
-        flight: bool,
-        /// Airframe values for --flight (TOML: mass_kg, iyy_kgm2, cl_de_per_rad,
-        /// cm_de_per_rad, ...; the deck gives mass, area, chord, density and cmq).
-        #[arg(long, value_name = "FILE")]
-        airframe: Option<PathBuf>,
-        /// Case of the deck (1-based).
-        #[arg(long, default_value_t = 1)]
-        case: usize,
-        /// Flight condition of the case (1-based, in the order of `run`).
-        #[arg(long, default_value_t = 1)]
-        condition: usize,
-        /// Write the analysis as JSON to this file.
-        #[arg(long, value_name = "OUT")]
-        json: Option<PathBuf>,
-        /// Write SVG plots of measured, predicted and corrected curves into this folder.
-        #[arg(long, value_name = "DIR")]
-        plots: Option<PathBuf>,
-        /// Compare only measured angles of attack from MIN to MAX deg (after --alpha-offset),
-        /// e.g. the attached flow below stall.
-        #[arg(
-            long,
-            value_name = "MIN,MAX",
-            value_delimiter = ',',
-            allow_hyphen_values = true
-        )]
-        alpha_range: Option<Vec<f64>>,
-        /// Subtract this from the measured angles of attack (a known alpha-reference offset).
-        #[arg(
-            long,
-            value_name = "DEG",
-            default_value_t = 0.0,
-            allow_negative_numbers = true
-        )]
-        alpha_offset: f64,
-        /// Noise of measured coefficients, e.g. CL=0.005,CD=0.001,Cm=0.002 (else the
-        /// sigma_<coef> columns, else estimated from the data).
-        #[arg(long, value_name = "COEF=SIGMA,...", value_delimiter = ',')]
-        sigma: Vec<String>,
-        #[command(flatten)]
-        rules: Rules,
-    },
+    Discrepancy(DiscrepancyArgs),
     /// Run a deck: flight conditions and coefficients.
     Run {
         deck: PathBuf,
@@ -479,19 +420,65 @@ fn read_text(path: &Path) -> Result<String, ExitCode> {
 }
 
 /// The options of `discrepancy`.
+#[derive(clap::Args)]
 struct DiscrepancyArgs {
+    /// A deck whose run is the prediction.
+    #[arg(
+        long,
+        value_name = "DECK",
+        required_unless_present = "predicted",
+        conflicts_with = "predicted"
+    )]
     model: Option<PathBuf>,
+    /// A prediction table (CSV: alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail).
+    #[arg(long, value_name = "PRED.csv")]
     predicted: Option<PathBuf>,
+    /// Measurements (CSV): static (alpha_deg, beta_deg, CL, CD, Cm, ..., sigma_<coef>) or,
+    /// with --flight, a time history (t, elevator_deg, thrust_n, airspeed_mps, alpha_deg,
+    /// pitch_rate_dps, theta_deg).
+    #[arg(long, value_name = "MEAS.csv")]
     measured: PathBuf,
+    /// The measurements are a recorded flight.
+    #[arg(long)]
     flight: bool,
+    /// Airframe values for --flight (TOML: mass_kg, iyy_kgm2, cl_de_per_rad,
+    /// cm_de_per_rad, ...; the deck gives mass, area, chord, density and cmq).
+    #[arg(long, value_name = "FILE")]
     airframe: Option<PathBuf>,
+    /// Case of the deck (1-based).
+    #[arg(long, default_value_t = 1)]
     case: usize,
+    /// Flight condition of the case (1-based, in the order of `run`).
+    #[arg(long, default_value_t = 1)]
     condition: usize,
+    /// Write the analysis as JSON to this file.
+    #[arg(long, value_name = "OUT")]
     json: Option<PathBuf>,
+    /// Write SVG plots of measured, predicted and corrected curves into this folder.
+    #[arg(long, value_name = "DIR")]
     plots: Option<PathBuf>,
+    /// Compare only measured angles of attack from MIN to MAX deg (after --alpha-offset),
+    /// e.g. the attached flow below stall.
+    #[arg(
+        long,
+        value_name = "MIN,MAX",
+        value_delimiter = ',',
+        allow_hyphen_values = true
+    )]
     alpha_range: Option<Vec<f64>>,
+    /// Subtract this from the measured angles of attack (a known alpha-reference offset).
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
     alpha_offset: f64,
+    /// Noise of measured coefficients, e.g. CL=0.005,CD=0.001,Cm=0.002 (else the
+    /// sigma_<coef> columns, else estimated from the data).
+    #[arg(long, value_name = "COEF=SIGMA,...", value_delimiter = ',')]
     sigma: Vec<String>,
+    #[command(flatten)]
     rules: Rules,
 }
 
@@ -850,35 +837,7 @@ fn main() -> ExitCode {
             format,
             rules,
         } => report(&deck, &reference, format, rules),
-        Command::Discrepancy {
-            model,
-            predicted,
-            measured,
-            flight,
-            airframe,
-            case,
-            condition,
-            json,
-            plots,
-            alpha_range,
-            alpha_offset,
-            sigma,
-            rules,
-        } => discrepancy(&DiscrepancyArgs {
-            model,
-            predicted,
-            measured,
-            flight,
-            airframe,
-            case,
-            condition,
-            json,
-            plots,
-            alpha_range,
-            alpha_offset,
-            sigma,
-            rules,
-        }),
+        Command::Discrepancy(args) => discrepancy(&args),
         Command::Airfoil {
             file,
             namelist,

@@ -425,11 +425,7 @@ fn tail_configuration_coefficients(
     let total = parts
         .into_iter()
         .collect::<Result<Vec<_>, _>>()
-        .map(|p| {
-            let mut total = lateral::sum(&p.iter().collect::<Vec<_>>());
-            total.warnings = p.into_iter().flat_map(|l| l.warnings).collect();
-            total
-        })
+        .map(lateral::sum_with_warnings)
         .map_err(|e| e.to_string());
     add_sideslip(&mut s, &mut warnings, "configuration with tails", total);
     Ok((s, warnings))
@@ -592,11 +588,7 @@ fn body_vertical_tail_coefficients(
         warnings: Vec::new(),
     };
     let total = fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail)
-        .map(|fin| {
-            let mut total = lateral::sum(&[&body_sideslip, &fin]);
-            total.warnings = fin.warnings;
-            total
-        })
+        .map(|fin| lateral::sum_with_warnings(vec![body_sideslip, fin]))
         .map_err(|e| e.to_string());
     add_sideslip(&mut s, &mut warnings, "body-vertical tail", total);
     Ok((s, warnings))

@@ -24,12 +24,14 @@ pub struct Measurement {
 }
 
 /// A CSV table: header names and rows of optional numbers, with line numbers.
-struct Table {
+pub(crate) struct Table {
     header: Vec<String>,
     rows: Vec<(usize, Vec<Option<f64>>)>,
 }
 
-fn read_table(text: &str, file: &str) -> Result<Table, DiscrepancyError> {
+/// Reads a CSV table (`#` comment lines, cells trimmed, empty cells none); a cell that is not
+/// a finite number is an error naming its file, line and column.
+pub(crate) fn read_table(text: &str, file: &str) -> Result<Table, DiscrepancyError> {
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .comment(Some(b'#'))
@@ -80,7 +82,8 @@ impl Table {
         self.header.iter().position(|h| h == name)
     }
 
-    fn required(&self, name: &str, file: &str) -> Result<Vec<f64>, DiscrepancyError> {
+    /// Column `name`, every row given.
+    pub(crate) fn required(&self, name: &str, file: &str) -> Result<Vec<f64>, DiscrepancyError> {
         let k = self
             .index(name)
             .ok_or_else(|| DiscrepancyError::MissingColumn {

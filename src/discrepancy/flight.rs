@@ -120,76 +120,22 @@ impl FlightRecord {
     /// Reads the CSV (columns t, elevator_deg, thrust_n, airspeed_mps, alpha_deg,
     /// pitch_rate_dps, theta_deg; t increasing).
     pub fn from_csv(text: &str, file: &str) -> Result<FlightRecord, DiscrepancyError> {
-        let mut reader = csv::ReaderBuilder::new()
-            .trim(csv::Trim::All)
-            .comment(Some(b'#'))
-            .from_reader(text.as_bytes());
-        let header: Vec<String> = reader
-            .headers()
-            .map_err(|e| DiscrepancyError::Csv {
-                file: file.into(),
-                line: 1,
-                reason: e.to_string(),
-            })?
-            .iter()
-            .map(str::to_string)
-            .collect();
-        const NAMES: [&str; 7] = [
-            "t",
-            "elevator_deg",
-            "thrust_n",
-            "airspeed_mps",
-            "alpha_deg",
-            "pitch_rate_dps",
-            "theta_deg",
-        ];
-        let mut index = [0usize; 7];
-        for (k, n) in NAMES.iter().enumerate() {
-            index[k] = header.iter().position(|h| h == n).ok_or_else(|| {
-                DiscrepancyError::MissingColumn {
-                    file: file.into(),
-                    column: n.to_string(),
-                    found: header.join(","),
-                }
-            })?;
-        }
-        let mut cols: [Vec<f64>; 7] = Default::default();
-        for record in reader.records() {
-            let record = record.map_err(|e| DiscrepancyError::Csv {
-                file: file.into(),
-                line: e.position().map_or(0, |p| p.line() as usize),
-                reason: e.to_string(),
-            })?;
-            let line = record.position().map_or(0, |p| p.line() as usize);
-            for k in 0..7 {
-                let cell = record.get(index[k]).unwrap_or("");
-                let v = cell
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|v| v.is_finite())
-                    .ok_or_else(|| DiscrepancyError::BadNumber {
-                        file: file.into(),
-                        line,
-                        column: NAMES[k].into(),
-                        text: cell.into(),
-                    })?;
-                cols[k].push(v);
-            }
-        }
-        if cols[0].len() < 3 || cols[0].windows(2).any(|w| w[1] <= w[0]) {
+        let table = super::data::read_table(text, file)?;
+        let column = |name: &str| table.required(name, file);
+        let t = column("t")?;
+        if t.len() < 3 || t.windows(2).any(|w| w[1] <= w[0]) {
             return Err(DiscrepancyError::Invalid {
                 reason: format!("{file}: t must increase over at least 3 samples"),
             });
         }
-        let [t, elevator_deg, thrust_n, airspeed_mps, alpha_deg, pitch_rate_dps, theta_deg] = cols;
         Ok(FlightRecord {
             t,
-            elevator_deg,
-            thrust_n,
-            airspeed_mps,
-            alpha_deg,
-            pitch_rate_dps,
-            theta_deg,
+            elevator_deg: column("elevator_deg")?,
+            thrust_n: column("thrust_n")?,
+            airspeed_mps: column("airspeed_mps")?,
+            alpha_deg: column("alpha_deg")?,
+            pitch_rate_dps: column("pitch_rate_dps")?,
+            theta_deg: column("theta_deg")?,
         })
     }
 

@@ -190,6 +190,13 @@ pub fn sum(parts: &[&Lateral]) -> Lateral {
     }
 }
 
+/// [`sum`] of owned parts, keeping every part's warnings.
+pub fn sum_with_warnings(parts: Vec<Lateral>) -> Lateral {
+    let mut total = sum(&parts.iter().collect::<Vec<_>>());
+    total.warnings = parts.into_iter().flat_map(|l| l.warnings).collect();
+    total
+}
+
 /// The lateral reference length b: $OPTINS BLREF, else the wing's span 2·SSPN.
 pub fn lateral_reference_length(case: &Case) -> Option<f64> {
     body::lateral_reference_span(case)
