@@ -231,6 +231,22 @@ fn load(path: &Path) -> Result<datcom::Deck, ExitCode> {
     })
 }
 
+/// A deck read under `rules` with its diagnostics printed; exit 2 when unreadable, 1 when it
+/// has errors (the commands that need a whole deck refuse one with errors).
+fn load_without_errors(path: &Path, rules: Rules) -> Result<datcom::Deck, ExitCode> {
+    let d = rules.apply(load(path)?);
+    print_diagnostics(&d, false, &mut std::io::stderr().lock());
+    if d.has_errors() {
+        eprintln!(
+            "datcom-rs: {} has {} error(s)",
+            path.display(),
+            d.error_count()
+        );
+        return Err(ExitCode::from(1));
+    }
+    Ok(d)
+}
+
 /// Checks every deck, going on past unreadable files. Exit 2 if a file could not be read,
 /// else 1 if a deck has errors, else 0.
 fn check(decks: &[PathBuf], notes: bool) -> ExitCode {
@@ -378,19 +394,10 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, rules: Rules) -> 
                 return ExitCode::from(2);
             }
         };
-        let d = match load(deck) {
-            Ok(d) => rules.apply(d),
+        let d = match load_without_errors(deck, rules) {
+            Ok(d) => d,
             Err(code) => return code,
         };
-        print_diagnostics(&d, false, &mut std::io::stderr().lock());
-        if d.has_errors() {
-            eprintln!(
-                "datcom-rs: {} has {} error(s)",
-                deck.display(),
-                d.error_count()
-            );
-            return ExitCode::from(1);
-        }
         match pe::report(&datcom::run(&d), &r) {
             Ok(rep) => match format {
                 ReportFormat::Text => pe::to_text(&rep),
@@ -490,19 +497,10 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
     };
     let (prediction, deck_model) = match (&a.model, &a.predicted) {
         (Some(deck), _) => {
-            let d = match load(deck) {
-                Ok(d) => a.rules.apply(d),
+            let d = match load_without_errors(deck, a.rules) {
+                Ok(d) => d,
                 Err(code) => return code,
             };
-            print_diagnostics(&d, false, &mut std::io::stderr().lock());
-            if d.has_errors() {
-                eprintln!(
-                    "datcom-rs: {} has {} error(s)",
-                    deck.display(),
-                    d.error_count()
-                );
-                return ExitCode::from(1);
-            }
             match dy::prediction::from_deck(&d, a.case, a.condition.saturating_sub(1)) {
                 Ok(m) => {
                     for w in &m.warnings {
