@@ -828,6 +828,7 @@ pub fn run_case(case: &Case) -> CaseResults {
     if let Some(f) = &case.flight {
         let conds = case.conditions.clone();
         warnings.extend(case.condition_warnings.iter().cloned());
+        warnings.extend(crate::methods::experimental::unused_variables(case));
         let n = f.alpha_deg.len();
         let configuration = configuration_name(case);
         // Component configurations: the configuration itself when it is one component, and

@@ -3,6 +3,7 @@
 
 pub mod body;
 pub mod dynamic;
+pub mod experimental;
 pub mod lateral;
 pub mod section;
 pub mod tail;

@@ -2,6 +2,7 @@
 //! given values replace the computed ones, as in the original (routines EXSUBT and EXPDAT).
 
 use crate::case::Case;
+use crate::methods::experimental;
 
 /// The body's experimental values for one Mach number, by angle-of-attack index; `None` where
 /// the deck gives no value.
@@ -21,21 +22,15 @@ impl ExperimentalData {
     /// The body data of `$EXPRnn` for the Mach number of index `mach_index` (0-based), when the
     /// case has that namelist with any of CDB, CLB, CMB, CLAB, CMAB.
     pub fn of_case(case: &Case, mach_index: usize) -> Option<ExperimentalData> {
-        let namelist = format!("EXPR{:02}", mach_index + 1);
-        let values = case.other.get(&namelist)?;
-        let read = |var: &str| -> Vec<Option<f64>> {
-            values
-                .get(var)
-                .and_then(|v| v.numbers())
-                .map(<[Option<f64>]>::to_vec)
-                .unwrap_or_default()
-        };
+        let (namelist, values) = experimental::namelist(case, mach_index)?;
+        let [cd, cl, cm, cla, cma] = experimental::BODY;
+        let read = |var: &str| experimental::column(values, var);
         let data = ExperimentalData {
-            cd: read("CDB"),
-            cl: read("CLB"),
-            cm: read("CMB"),
-            cla_per_deg: read("CLAB"),
-            cma_per_deg: read("CMAB"),
+            cd: read(cd),
+            cl: read(cl),
+            cm: read(cm),
+            cla_per_deg: read(cla),
+            cma_per_deg: read(cma),
             namelist,
         };
         data.any().then_some(data)

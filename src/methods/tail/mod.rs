@@ -17,8 +17,11 @@
 //! (`methods::wing`). The vertical tail's only longitudinal term is its zero-lift drag, as in
 //! the original.
 //!
+//! Experimental wing-body data ($EXPRnn CDWB, CLWB, CMWB, CLAWB, CMAWB) enter through the
+//! wing-body's coefficients (`methods::wing_body`), as in the original.
+//!
 //! Not covered: canards (the original's DWASH 3 and WBTAIL's canard branch), experimental
-//! data ($EXPRnn downwash, q/q∞, wing-body), non-straight wings with a tail (the original then
+//! downwash and q/q∞ ($EXPRnn EPSLON, DEODA, QOQINF) and tail data, non-straight wings with a tail (the original then
 //! prints no configuration totals either), trim pages, Mach numbers above STMACH (transonic
 //! and supersonic downwash and tails), the body-horizontal tail and body-vertical tail pages.
 //!
@@ -320,7 +323,13 @@ pub fn configuration(
         return Err(TailError::NoTail);
     }
     let wb = straight_wing_body(case, condition_index, alpha_deg)?;
-    let mut warnings: Vec<TailWarning> = Vec::new();
+    let mut warnings: Vec<TailWarning> = wb
+        .warnings
+        .iter()
+        .filter(|w| matches!(w, WingBodyWarning::ExperimentalData { .. }))
+        .cloned()
+        .map(TailWarning::WingBody)
+        .collect();
 
     // Fins.
     let mut fin = |surface: Surface, present: bool| -> Result<Option<FinZeroLiftDrag>, TailError> {

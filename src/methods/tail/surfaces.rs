@@ -105,6 +105,14 @@ pub fn tail_as_wing(case: &Case) -> Result<Case, TailError> {
     s.aliw_deg = s.alih_deg;
     proxy.synthesis = Some(s);
     proxy.larwb = None;
+    // The deck's experimental wing-body data belong to the wing, not to the tail in its
+    // place (the original's body-horizontal tail takes none); its body data stay.
+    for (name, values) in proxy.other.iter_mut() {
+        if name.starts_with("EXPR") {
+            values
+                .retain(|var, _| !crate::methods::experimental::WING_BODY.contains(&var.as_str()));
+        }
+    }
     Ok(proxy)
 }
 

@@ -17,7 +17,12 @@
 //! moment is not applicable (none from there on); CN and CA are resolved from CL and CD at
 //! the schedule angle.
 //!
-//! Not covered: d/b > 0.8 (figure 4.3.1.2-12c), experimental data, Mach numbers above STMACH,
+//! Experimental data of the deck ($EXPRnn CDWB, CLWB, CMWB) replace the computed CD, CL, CM
+//! before the slopes are taken, and CLAWB, CMAWB the slopes where given, as the original does
+//! (EXSUBT); the computed values stay in the terms (module `experimental`,
+//! docs/experimental-data.md).
+//!
+//! Not covered: d/b > 0.8 (figure 4.3.1.2-12c), Mach numbers above STMACH,
 //! and the regression above Mach 0.8 (the original's transonic tables): there the drag due to
 //! lift is the components' sum.
 //!
@@ -31,10 +36,12 @@
 //! Where this differs from the original, see `docs/wing-body.md`.
 
 mod drag;
+mod experimental;
 pub mod figures;
 mod lift;
 mod moment;
 
+use crate::methods::experimental::substitute;
 use crate::numeric::curve_slopes;
 use std::fmt;
 
@@ -54,6 +61,7 @@ pub use drag::{
     regression_drag_due_to_lift, wing_body_zero_lift_drag, DragMethod, RegressionInputs,
     WingBodyDrag, WingBodyZeroLiftDrag,
 };
+pub use experimental::{ExperimentalWingBody, Substitution};
 pub use lift::{
     body_vortex, interference_factors, vortex_interference_factor, wing_body_lift, BodyVortex,
     InterferenceFactors, LiftAtAngle, LiftInputs, LARGE_BODY_SPAN_RATIO, VORTEX_ONSET_ALPHA_DEG,
@@ -107,6 +115,12 @@ pub enum WingBodyWarning {
     NoRegressionDrag { alpha_deg: f64 },
     /// CM and CMA are not applicable from this angle on (the wing's moment is not).
     MomentNotApplicable { alpha_deg: f64 },
+    /// Experimental data of the deck replaced computed values: the namelist, and each variable
+    /// with the number of angles it gives.
+    ExperimentalData {
+        namelist: String,
+        variables: Vec<(String, usize)>,
+    },
 }
 
 impl fmt::Display for WingBodyWarning {
@@ -123,6 +137,20 @@ impl fmt::Display for WingBodyWarning {
                 f,
                 "CM and CMA not applicable from alpha = {alpha_deg} deg (the wing's moment is not)"
             ),
+            WingBodyWarning::ExperimentalData {
+                namelist,
+                variables,
+            } => {
+                let list: Vec<String> = variables
+                    .iter()
+                    .map(|(v, k)| format!("{v} ({k} angle{})", if *k == 1 { "" } else { "s" }))
+                    .collect();
+                write!(
+                    f,
+                    "experimental data from ${namelist} {} replace the computed wing-body values",
+                    list.join(", ")
+                )
+            }
         }
     }
 }
@@ -154,6 +182,8 @@ pub struct WingBodyTerms {
     pub carry_over_centre: CarryOverCentre,
     /// Per angle; none where the wing's moment is not applicable.
     pub moment: Vec<Option<MomentAtAngle>>,
+    /// The experimental data ($EXPRnn) that replaced computed values, and those values.
+    pub experimental: Option<Substitution>,
 }
 
 /// The wing-body coefficients at each angle of attack. `None` where a value cannot be computed
@@ -335,21 +365,61 @@ pub fn wing_body_with_section(
         })
         .collect();
     let mut cm: Vec<Option<f64>> = moment.iter().map(|m| m.map(|m| m.cm)).collect();
-    let applicable = cm.iter().position(Option::is_none).unwrap_or(n);
-    if applicable < n {
-        warnings.push(WingBodyWarning::MomentNotApplicable {
-            alpha_deg: alpha_deg[applicable],
-        });
-        for v in cm.iter_mut().skip(applicable) {
+    if let Some(k) = cm.iter().position(Option::is_none) {
+        for v in cm.iter_mut().skip(k) {
             *v = None;
         }
     }
+    let mut cl = cl;
+    let mut cd = cd;
+    let alpha_rad: Vec<f64> = alpha_deg.iter().map(|a| a.to_radians()).collect();
+    let slopes = |cl: &[Option<f64>], cm: &[Option<f64>]| {
+        let applicable = cm.iter().position(Option::is_none).unwrap_or(n);
+        let cla = curve_slopes(&alpha_rad, cl);
+        let mut cma = curve_slopes(&alpha_rad[..applicable], &cm[..applicable]);
+        cma.resize(n, None);
+        (cla, cma)
+    };
+    let (mut cla, mut cma) = slopes(&cl, &cm);
+
+    // Experimental data replace the computed values; the slopes are then those of the
+    // substituted curves, except where the deck gives them.
+    let substitution = ExperimentalWingBody::of_case(case, condition.mach_index).map(|data| {
+        let kept = Substitution {
+            data,
+            computed_cd: cd.clone(),
+            computed_cl: cl.clone(),
+            computed_cm: cm.clone(),
+            computed_cla_per_rad: cla.clone(),
+            computed_cma_per_rad: cma.clone(),
+        };
+        let e = &kept.data;
+        substitute(&mut cd, &e.cd);
+        substitute(&mut cl, &e.cl);
+        substitute(&mut cm, &e.cm);
+        (cla, cma) = slopes(&cl, &cm);
+        let per_rad = |v: &[Option<f64>]| -> Vec<Option<f64>> {
+            v.iter().map(|g| g.map(f64::to_degrees)).collect()
+        };
+        substitute(&mut cla, &per_rad(&e.cla_per_deg));
+        substitute(&mut cma, &per_rad(&e.cma_per_deg));
+        warnings.push(WingBodyWarning::ExperimentalData {
+            namelist: e.namelist.clone(),
+            variables: e
+                .given()
+                .into_iter()
+                .map(|(v, k)| (v.to_string(), k))
+                .collect(),
+        });
+        kept
+    });
+    if let Some(k) = cm.iter().position(Option::is_none) {
+        warnings.push(WingBodyWarning::MomentNotApplicable {
+            alpha_deg: alpha_deg[k],
+        });
+    }
 
     // The page.
-    let alpha_rad: Vec<f64> = alpha_deg.iter().map(|a| a.to_radians()).collect();
-    let cla = curve_slopes(&alpha_rad, &cl);
-    let mut cma = curve_slopes(&alpha_rad[..applicable], &cm[..applicable]);
-    cma.resize(n, None);
     let crate::numeric::BodyAxes { cn, ca, xcp } =
         crate::numeric::body_axes(&alpha_rad, &cl, &cd, &cm);
     let auxiliary = Auxiliary {
@@ -381,6 +451,7 @@ pub fn wing_body_with_section(
             drag,
             carry_over_centre: centre,
             moment,
+            experimental: substitution,
         },
         warnings,
     })
