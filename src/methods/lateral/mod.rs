@@ -48,7 +48,9 @@ use crate::results::planform_area_and_mac;
 pub use body::body_lateral;
 pub use vertical_tail::{fin_lateral, Fin, FinLateralTerms};
 pub use wing::{wing_lateral, DihedralRoll, RollingMomentTerms, WingLateralTerms};
-pub use wing_body::{wing_body_lateral, WingBodyLateralTerms};
+pub use wing_body::{
+    exposed_root, wing_body_lateral, wing_body_lateral_at_root, ExposedRoot, WingBodyLateralTerms,
+};
 
 /// Why the lateral derivatives cannot be computed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error, Serialize)]

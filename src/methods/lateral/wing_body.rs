@@ -141,6 +141,54 @@ pub fn wing_body_lateral(
     wing: &WingAlone,
     wing_body: &WingBody,
 ) -> Result<Lateral, LateralError> {
+    let exposed = exposed_root(case, wing);
+    wing_body_lateral_at_root(case, condition_index, alpha_deg, wing, wing_body, exposed)
+}
+
+/// The exposed root of a lifting surface on the body: DATCOM 5.2.2.1 takes the surface's
+/// height z_w at the quarter chord of this root and the distance l_f of figure 5.2.2.1-26 from
+/// the nose to the tip's half chord along the surface from this root.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ExposedRoot {
+    /// The chord at the body side c_r,e, m.
+    pub chord: f64,
+    /// Its leading edge behind the surface's apex (XW) along the body axis at the incidence
+    /// i_w: (b/2 − b_e/2)·tan Λ_LE·cos i_w, m.
+    pub leading_edge: f64,
+}
+
+/// The exposed root of the case's wing (whatever surface is in the wing's place: the
+/// horizontal tail on the body-horizontal tail page), from the wing-alone planform terms, its
+/// SSPN, SSPNE and incidence ALIW.
+pub fn exposed_root(case: &Case, wing: &WingAlone) -> ExposedRoot {
+    let p = &wing.terms.planform;
+    let inboard_body = case
+        .wing
+        .as_ref()
+        .and_then(|w| Some(w.sspn? - w.sspne.or(w.sspn)?))
+        .unwrap_or(0.0);
+    let incidence = case
+        .synthesis
+        .as_ref()
+        .and_then(|s| s.aliw_deg)
+        .unwrap_or(0.0);
+    ExposedRoot {
+        chord: p.exposed_root_chord,
+        leading_edge: inboard_body * p.inboard.leading_edge.tan * incidence.to_radians().cos(),
+    }
+}
+
+/// [`wing_body_lateral`] with the surface's exposed root given: the same method, the height
+/// of the side-force factor and the l_f of K_f taken from `exposed` (as the rest of the geometry
+/// from the case's wing). Per radian.
+pub fn wing_body_lateral_at_root(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    wing: &WingAlone,
+    wing_body: &WingBody,
+    exposed: ExposedRoot,
+) -> Result<Lateral, LateralError> {
     let WingInputs {
         plan,
         condition,
@@ -166,7 +214,7 @@ pub fn wing_body_lateral(
     let synthesis = case.synthesis.as_ref();
     let get = |f: fn(&crate::case::Synthesis) -> Option<f64>| synthesis.and_then(f).unwrap_or(0.0);
     let (xw, zw, incidence) = (get(|s| s.xw), get(|s| s.zw), get(|s| s.aliw_deg));
-    let (sin_i, cos_i) = incidence.to_radians().sin_cos();
+    let sin_i = incidence.to_radians().sin();
     let nose = case
         .body
         .as_ref()
@@ -185,8 +233,8 @@ pub fn wing_body_lateral(
     let body_width_at_wing = 2.0 * inboard_body;
     let tan_le_in = p.inboard.leading_edge.tan;
     let tan_le_out = p.outboard.map_or(0.0, |o| o.leading_edge.tan);
-    let exposed_root_le = inboard_body * tan_le_in * cos_i;
-    let wing_height_side_force = -zw + (0.25 * p.exposed_root_chord + exposed_root_le) * sin_i
+    let exposed_root_le = exposed.leading_edge;
+    let wing_height_side_force = -zw + (0.25 * exposed.chord + exposed_root_le) * sin_i
         - inboard_body * dihedral_in.to_radians().tan();
     let wing_height_roll = -zw + root / 4.0 * sin_i;
     let nose_to_tip_half_chord = (xw - nose)
