@@ -85,3 +85,71 @@ pub fn substitute(values: &mut [Option<f64>], given: &[Option<f64>]) -> bool {
     }
     any
 }
+
+/// One component's experimental values ($EXPRnn) for one Mach number, by angle-of-attack
+/// index; `None` where the deck gives no value. `variables` names them (e.g. [`BODY`],
+/// [`WING_BODY`]).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ComponentData {
+    /// The namelist the values come from (`EXPR01`, ...).
+    pub namelist: String,
+    /// The five variable names, in the order of the fields below.
+    pub variables: [&'static str; 5],
+    pub cd: Vec<Option<f64>>,
+    pub cl: Vec<Option<f64>>,
+    pub cm: Vec<Option<f64>>,
+    /// Slopes as the deck gives them, per degree.
+    pub cla_per_deg: Vec<Option<f64>>,
+    pub cma_per_deg: Vec<Option<f64>>,
+}
+
+impl ComponentData {
+    /// The data of `variables` in `$EXPRnn` for the Mach number of index `mach_index`
+    /// (0-based), when the case has that namelist with any of them.
+    pub fn of_case(
+        case: &Case,
+        mach_index: usize,
+        variables: [&'static str; 5],
+    ) -> Option<ComponentData> {
+        let (namelist, values) = namelist(case, mach_index)?;
+        let [cd, cl, cm, cla, cma] = variables.map(|v| column(values, v));
+        let data = ComponentData {
+            namelist,
+            variables,
+            cd,
+            cl,
+            cm,
+            cla_per_deg: cla,
+            cma_per_deg: cma,
+        };
+        (!data.given().is_empty()).then_some(data)
+    }
+
+    fn columns(&self) -> [&Vec<Option<f64>>; 5] {
+        [
+            &self.cd,
+            &self.cl,
+            &self.cm,
+            &self.cla_per_deg,
+            &self.cma_per_deg,
+        ]
+    }
+
+    /// The variables given, each with the number of angles it gives.
+    pub fn given(&self) -> Vec<(&'static str, usize)> {
+        self.variables
+            .iter()
+            .zip(self.columns())
+            .map(|(name, c)| (*name, c.iter().filter(|v| v.is_some()).count()))
+            .filter(|(_, n)| *n > 0)
+            .collect()
+    }
+
+    /// The original takes the slopes of the first angle from the curves (not from the method's
+    /// analytic slopes) when any of the five arrays gives its first element.
+    pub fn gives_first_angle(&self) -> bool {
+        self.columns()
+            .iter()
+            .any(|c| c.first().copied().flatten().is_some())
+    }
+}

@@ -447,7 +447,11 @@ pub fn body_alone(
     )?;
     let n = angles.len();
     let alpha_rad: Vec<f64> = angles.iter().map(|a| a.to_radians()).collect();
-    let experimental = ExperimentalData::of_case(case, condition.mach_index);
+    let experimental = ExperimentalData::of_case(
+        case,
+        condition.mach_index,
+        crate::methods::experimental::BODY,
+    );
     let per_deg_to_per_rad = 180.0 / std::f64::consts::PI;
     if let Some(e) = &experimental {
         experimental::substitute(&mut cd, &e.cd);

@@ -384,7 +384,12 @@ pub fn wing_body_with_section(
 
     // Experimental data replace the computed values; the slopes are then those of the
     // substituted curves, except where the deck gives them.
-    let substitution = ExperimentalWingBody::of_case(case, condition.mach_index).map(|data| {
+    let substitution = ExperimentalWingBody::of_case(
+        case,
+        condition.mach_index,
+        crate::methods::experimental::WING_BODY,
+    )
+    .map(|data| {
         let kept = Substitution {
             data,
             computed_cd: cd.clone(),
