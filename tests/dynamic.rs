@@ -7,15 +7,19 @@
 //! `results::run_case` (the original program's rules, `Deck::with_original_rules`: its section
 //! Reynolds number and NACA 5-digit reading, floors asserted; the library default reported). A printed number counts; so does an NDM
 //! (ours must mark the column as without method), and a number we give where the original
-//! prints a blank. Run `cargo test --test dynamic -- --nocapture` for the figures per
-//! configuration and per case.
+//! prints a blank. The ventral-fin pages are checked once more with the original's ventral-fin
+//! defect applied to ours (CYp with (2Z − z), Cnr and Clp with the vertical tail's CYβ;
+//! docs/dynamic.md), not counted in the totals. Run `cargo test --test dynamic -- --nocapture`
+//! for the figures per configuration and per case.
 
 mod common;
 
 use std::collections::BTreeMap;
 
-use datcom::case::{Deck, SectionReynolds};
+use datcom::case::{Case, Deck, SectionReynolds};
 use datcom::methods::body::subsonic_limit;
+use datcom::methods::dynamic::fin_dynamic;
+use datcom::methods::lateral::{fin_lateral, lateral_reference_length, Fin};
 use datcom::report::compare::agrees;
 use datcom::report::legacy::{self, ListedCondition};
 use datcom::results::{run_case, ConditionResults, DYNAMIC_NAMES};
@@ -27,6 +31,12 @@ const MACH_PRINTED: f64 = 0.0005;
 /// Numbers reached per column with the original's section Reynolds number (floors;
 /// docs/dynamic.md explains each miss).
 const FLOORS: [usize; 9] = [34, 34, 153, 153, 336, 436, 322, 428, 431];
+/// The ventral-fin pages with the original's ventral-fin defect applied to ours (test only,
+/// not counted in `FLOORS`; docs/dynamic.md, "The ventral fin"): CYp and Clp follow the
+/// defect; Cnr does not (0: with the vertical tail's CYβ on our fin arm the fin's Cnr is about
+/// twice the original's, an open item there); the other misses are the wing's terms near its
+/// maximum lift and the α̇ class.
+const FLOORS_VENTRAL_FIN_WITH_DEFECT: [usize; 9] = [3, 3, 41, 41, 42, 42, 39, 0, 45];
 
 #[derive(Default)]
 struct Tally {
@@ -129,7 +139,22 @@ fn compare(
     }
 }
 
-fn run(decks: &[(String, Deck, String)]) -> Tally {
+/// Which numbers `run` compares.
+#[derive(Clone, Copy, PartialEq)]
+enum Mode {
+    /// Every page, our results as they are.
+    AllPages,
+    /// The ventral-fin pages only, our results as they are.
+    VentralFin,
+    /// The ventral-fin pages only, with the original's ventral-fin defect applied to ours
+    /// ([`with_the_original_fin_defect`]).
+    VentralFinWithDefect,
+}
+
+/// The page the original prints for a configuration with a ventral fin.
+const VENTRAL_FIN_PAGE: &str = "VENTRAL FIN CONFIGURATION";
+
+fn run(decks: &[(String, Deck, String)], mode: Mode) -> Tally {
     let mut t = Tally::default();
     for (name, deck, text) in decks {
         let listings = common::case_listings(text);
@@ -163,12 +188,91 @@ fn run(decks: &[(String, Deck, String)]) -> Tally {
                         continue;
                     }
                     let at = format!("{name} case {} line {}", ci + 1, listed.row.line);
-                    compare(ours.map(|(_, c)| c), listed, &at, name, &mut t);
+                    match mode {
+                        Mode::AllPages => {
+                            compare(ours.map(|(_, c)| c), listed, &at, name, &mut t);
+                        }
+                        Mode::VentralFin | Mode::VentralFinWithDefect => {
+                            if !listed.configuration.trim().ends_with(VENTRAL_FIN_PAGE) {
+                                continue;
+                            }
+                            let ours = ours.map(|(_, c)| c);
+                            if mode == Mode::VentralFin {
+                                compare(ours, listed, &at, name, &mut t);
+                            } else {
+                                let defective =
+                                    ours.and_then(|c| with_the_original_fin_defect(case, c));
+                                compare(defective.as_ref(), listed, &at, name, &mut t);
+                            }
+                        }
+                    }
                 }
             }
         }
     }
     t
+}
+
+/// Our results for a configuration with a ventral fin, with the original's ventral-fin defect
+/// applied (docs/dynamic.md, difference 2), for this test only: our total minus our fin term
+/// ([`fin_dynamic`]) plus the fin term as the original codes it, CYp = (2Z − z)/b·CYβ_F in
+/// place of 2(Z − z)/b·CYβ_F, and Cnr = 2L²/b²·CYβ_V, Clp = 2Z(Z − z)/b²·CYβ_V with the
+/// vertical tail's CYβ_V in place of the fin's CYβ_F (Cnp and Clr keep the fin's, as the
+/// original). The arms l, z and both CYβ are the library's (`fin_lateral`); Z = z cos α −
+/// l sin α, L = l cos α + z sin α. None when a term is missing.
+fn with_the_original_fin_defect(case: &Case, ours: &ConditionResults) -> Option<ConditionResults> {
+    // The fin term the test recomputes with the fin's own CYβ against the library's: the
+    // same formulas, so rounding only.
+    const SAME_FORMULA: f64 = 1e-12;
+    let k = case.conditions.iter().position(|c| *c == ours.condition)?;
+    let alpha = &ours.alpha_deg;
+    let fin = fin_lateral(case, k, alpha, Fin::VentralFin).ok()?;
+    let tail = fin_lateral(case, k, alpha, Fin::VerticalTail).ok()?;
+    let cyb_f = fin.cyb.first().copied().flatten()?;
+    let cyb_v = tail.cyb.first().copied().flatten()?;
+    let arms = fin.fin_terms.as_ref()?;
+    let (l, z) = (arms.arm_x, arms.arm_z);
+    let b = lateral_reference_length(case)?;
+    let our_fin = fin_dynamic(case, k, alpha, Fin::VentralFin).ok()?;
+    let mut out = ours.clone();
+    let d = out.dynamic.as_mut()?;
+    for (i, a) in alpha.iter().enumerate() {
+        let (sin, cos) = a.to_radians().sin_cos();
+        let zz = z * cos - l * sin;
+        let ll = l * cos + z * sin;
+        // (column, our fin term recomputed, the original's fin term)
+        let columns = [
+            (
+                &mut d.cyp,
+                &our_fin.cyp,
+                2.0 * (zz - z) / b * cyb_f,
+                (2.0 * zz - z) / b * cyb_f,
+            ),
+            (
+                &mut d.cnr,
+                &our_fin.cnr,
+                2.0 * ll * ll / (b * b) * cyb_f,
+                2.0 * ll * ll / (b * b) * cyb_v,
+            ),
+            (
+                &mut d.clp,
+                &our_fin.clp,
+                2.0 * zz * (zz - z) / (b * b) * cyb_f,
+                2.0 * zz * (zz - z) / (b * b) * cyb_v,
+            ),
+        ];
+        for (total, library, recomputed, original) in columns {
+            let library = library.at(i)?;
+            assert!(
+                (library - recomputed).abs() <= SAME_FORMULA * recomputed.abs().max(1e-12),
+                "the fin term {library} recomputed as {recomputed}"
+            );
+            if let Some(v) = total.get_mut(i).and_then(|v| v.as_mut()) {
+                *v += original - library;
+            }
+        }
+    }
+    Some(out)
 }
 
 #[test]
@@ -198,7 +302,7 @@ fn dynamic_derivatives_agree_with_the_original() {
                 )
             })
             .collect();
-        let t = run(&decks);
+        let t = run(&decks, Mode::AllPages);
         eprintln!("{title}:");
         let (mut m, mut n) = (0, 0);
         for (j, c) in DYNAMIC_NAMES.iter().enumerate() {
@@ -224,6 +328,35 @@ fn dynamic_derivatives_agree_with_the_original() {
             eprintln!("  miss: {miss}");
         }
         if check {
+            // The ventral-fin pages once more, as they are and with the original's
+            // ventral-fin defect applied to ours (not counted in the totals above).
+            let as_is = run(&decks, Mode::VentralFin);
+            let defect = run(&decks, Mode::VentralFinWithDefect);
+            eprintln!("{title}: the ventral-fin pages, as ours / with the original's defect");
+            for (j, c) in DYNAMIC_NAMES.iter().enumerate() {
+                eprintln!(
+                    "  {c}: {} / {}, {} / {}",
+                    as_is.matched[j], as_is.total[j], defect.matched[j], defect.total[j]
+                );
+                assert!(
+                    defect.matched[j] >= FLOORS_VENTRAL_FIN_WITH_DEFECT[j],
+                    "{c} with the original's ventral-fin defect: {} / {} below the floor {}",
+                    defect.matched[j],
+                    defect.total[j],
+                    FLOORS_VENTRAL_FIN_WITH_DEFECT[j]
+                );
+            }
+            let sum = |t: &Tally| {
+                (
+                    t.matched.iter().sum::<usize>(),
+                    t.total.iter().sum::<usize>(),
+                )
+            };
+            let ((a, n), (d, _)) = (sum(&as_is), sum(&defect));
+            eprintln!("  all columns: {a} / {n} as ours, {d} / {n} with the defect");
+            for miss in &defect.misses {
+                eprintln!("  miss with the defect: {miss}");
+            }
             for (j, c) in DYNAMIC_NAMES.iter().enumerate() {
                 assert!(
                     t.matched[j] >= FLOORS[j],
