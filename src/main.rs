@@ -450,14 +450,14 @@ struct DiscrepancyArgs {
     flight: bool,
     /// Airframe values for --flight (TOML: mass_kg, iyy_kgm2, cl_de_per_rad,
     /// cm_de_per_rad, ...; the deck gives mass, area, chord, density and cmq).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", requires = "flight")]
     airframe: Option<PathBuf>,
     /// Case of the deck (1-based).
-    #[arg(long, default_value_t = 1)]
-    case: usize,
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    case: u64,
     /// Flight condition of the case (1-based, in the order of `run`).
-    #[arg(long, default_value_t = 1)]
-    condition: usize,
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    condition: u64,
     /// Write the analysis as JSON to this file.
     #[arg(long, value_name = "OUT")]
     json: Option<PathBuf>,
@@ -470,7 +470,8 @@ struct DiscrepancyArgs {
         long,
         value_name = "MIN,MAX",
         value_delimiter = ',',
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "flight"
     )]
     alpha_range: Option<Vec<f64>>,
     /// Subtract this from the measured angles of attack (a known alpha-reference offset).
@@ -478,12 +479,18 @@ struct DiscrepancyArgs {
         long,
         value_name = "DEG",
         default_value_t = 0.0,
-        allow_negative_numbers = true
+        allow_negative_numbers = true,
+        conflicts_with = "flight"
     )]
     alpha_offset: f64,
     /// Noise of measured coefficients, e.g. CL=0.005,CD=0.001,Cm=0.002 (else the
     /// sigma_<coef> columns, else estimated from the data).
-    #[arg(long, value_name = "COEF=SIGMA,...", value_delimiter = ',')]
+    #[arg(
+        long,
+        value_name = "COEF=SIGMA,...",
+        value_delimiter = ',',
+        conflicts_with = "flight"
+    )]
     sigma: Vec<String>,
     #[command(flatten)]
     rules: Rules,
@@ -501,7 +508,7 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
                 Ok(d) => d,
                 Err(code) => return code,
             };
-            match dy::prediction::from_deck(&d, a.case, a.condition.saturating_sub(1)) {
+            match dy::prediction::from_deck(&d, a.case as usize, a.condition as usize - 1) {
                 Ok(m) => {
                     for w in &m.warnings {
                         eprintln!("warning: {w}");

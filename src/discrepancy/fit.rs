@@ -29,7 +29,8 @@ pub enum Termination {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Fit {
     pub parameters: Vec<f64>,
-    /// Standard errors of the parameters (from the scaled covariance).
+    /// Standard errors of the parameters (from the scaled covariance); NaN where the data
+    /// carry no information on a parameter.
     pub standard_errors: Vec<f64>,
     /// Correlation of the parameters (p × p).
     pub correlation: DMatrix<f64>,
@@ -134,13 +135,31 @@ where
     let (standard_errors, correlation) = match jacobian(&residuals, &theta, &r, scales) {
         Some(j) if p > 0 => {
             let a = j.transpose() * &j;
-            let scale = if n > p { chi / (n - p) as f64 } else { 1.0 };
+            // The residuals are weighted by the noise, so (JᵀJ)⁻¹ is the covariance when the
+            // noise is right; a larger reduced χ² (a misfit, or noise underestimated) widens
+            // it, a smaller one does not narrow it.
+            let scale = if n > p {
+                (chi / (n - p) as f64).max(1.0)
+            } else {
+                1.0
+            };
             let inverse = a
                 .clone()
                 .pseudo_inverse(PSEUDO_INVERSE_EPS * a.amax().max(f64::MIN_POSITIVE))
                 .unwrap_or_else(|_| DMatrix::zeros(p, p));
             let cov = inverse * scale;
-            let se: Vec<f64> = (0..p).map(|k| cov[(k, k)].max(0.0).sqrt()).collect();
+            // A direction the pseudo-inverse dropped (no information in the data) has no
+            // standard error: NaN, never 0.
+            let se: Vec<f64> = (0..p)
+                .map(|k| {
+                    let v = cov[(k, k)];
+                    if v.is_finite() && v > 0.0 {
+                        v.sqrt()
+                    } else {
+                        f64::NAN
+                    }
+                })
+                .collect();
             let corr = DMatrix::from_fn(p, p, |a, b| {
                 let d = se[a] * se[b];
                 if d > 0.0 {
@@ -153,7 +172,7 @@ where
             });
             (se, corr)
         }
-        _ => (vec![0.0; p], DMatrix::identity(p, p)),
+        _ => (vec![f64::NAN; p], DMatrix::identity(p, p)),
     };
     Some(Fit {
         parameters: theta,
@@ -193,8 +212,8 @@ mod tests {
         let slope = sxy / sxx;
         approx::assert_relative_eq!(fit.parameters[1], slope, max_relative = 1e-6);
         approx::assert_relative_eq!(fit.parameters[0], ym - slope * xm, max_relative = 1e-6);
-        // SE(slope) = s/√Sxx with s² = RSS/(n − 2).
-        let s2 = fit.chi_square / 3.0;
+        // SE(slope) = s/√Sxx with s² = max(1, RSS/(n − 2)) (unit-weight residuals).
+        let s2 = (fit.chi_square / 3.0).max(1.0);
         approx::assert_relative_eq!(
             fit.standard_errors[1],
             (s2 / sxx).sqrt(),

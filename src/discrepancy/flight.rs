@@ -318,6 +318,14 @@ fn outputs(states: &[State]) -> [Vec<f64>; 4] {
     ]
 }
 
+/// A flight record needs this many samples (four initial-state parameters and the effects'
+/// are fitted; the selection keeps at least two residuals per parameter).
+pub const MIN_FLIGHT_SAMPLES: usize = 20;
+
+/// The smallest noise a recorded state is given (m/s, deg, deg/s, deg): a record without
+/// scatter (a simulation, a smoothed file) would otherwise make any mismatch significant.
+pub const SENSOR_RESOLUTION: [f64; 4] = [0.01, 0.01, 0.01, 0.01];
+
 /// Names of the compared states.
 pub const STATES: [&str; 4] = ["airspeed_mps", "alpha_deg", "pitch_rate_dps", "theta_deg"];
 
@@ -375,11 +383,24 @@ pub fn analyse_flight(
         &record.pitch_rate_dps,
         &record.theta_deg,
     ];
+    if record.t.len() < MIN_FLIGHT_SAMPLES {
+        return Err(DiscrepancyError::Invalid {
+            reason: format!(
+                "the flight record has {} samples: at least {MIN_FLIGHT_SAMPLES} are needed to fit effects and the initial state",
+                record.t.len()
+            ),
+        });
+    }
     let mut sigma = [1.0; 4];
     for k in 0..4 {
-        sigma[k] = noise_estimate(&record.t, recorded[k])
-            .unwrap_or(1.0)
-            .max(1e-4);
+        let estimate = noise_estimate(&record.t, recorded[k]).unwrap_or(0.0);
+        if estimate < SENSOR_RESOLUTION[k] {
+            warnings.push(format!(
+                "the recorded {} shows no scatter (noise estimated {estimate:.2e}): its noise is taken as the resolution {} of the units",
+                STATES[k], SENSOR_RESOLUTION[k]
+            ));
+        }
+        sigma[k] = estimate.max(SENSOR_RESOLUTION[k]);
     }
     // The initial state is fitted with every model (output-error practice): a start from
     // noisy samples would leave a transient (a phugoid) that effects would try to explain.

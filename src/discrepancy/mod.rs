@@ -101,8 +101,9 @@ impl Default for Options {
 pub struct Evidence {
     /// Fall of BIC when the effect was added (on the training points).
     pub bic_drop: f64,
-    /// Partial F statistic of the added parameters: ((RSS₀ − RSS₁)/k)/(RSS₁/(n − p)).
-    pub partial_f: f64,
+    /// Partial F statistic of the added parameters: ((RSS₀ − RSS₁)/k)/(RSS₁/(n − p)), p
+    /// counting every fitted parameter; none for an exact fit (RSS₁ = 0).
+    pub partial_f: Option<f64>,
     pub rss_before: f64,
     pub rss_after: f64,
     /// Weighted residuals in the fit.
@@ -174,6 +175,8 @@ struct Point {
     alpha_deg: f64,
     /// Measured CL, CD, Cm (none where not measured).
     measured: [Option<f64>; 3],
+    /// Their noise: the row's `sigma_<coef>` where given, else the coefficient's.
+    sigma: [f64; 3],
 }
 
 const LONGITUDINAL: [&str; 3] = ["CL", "CD", "Cm"];
@@ -190,13 +193,12 @@ fn pick(c: &Coefficients, k: usize) -> f64 {
 fn static_residuals(
     prediction: &Prediction,
     points: &[&Point],
-    sigma: &[f64; 3],
     effects: &[(EffectId, &[f64])],
 ) -> Option<Vec<f64>> {
     let mut r = Vec::with_capacity(points.len() * 3);
     for p in points {
         let c = apply(prediction, effects, p.alpha_deg)?;
-        for (k, s) in sigma.iter().enumerate() {
+        for (k, s) in p.sigma.iter().enumerate() {
             if let Some(m) = p.measured[k] {
                 r.push((pick(&c, k) - m) / s);
             }
@@ -290,7 +292,9 @@ fn departs_from_nominal(id: EffectId, fit: &fit::Fit) -> bool {
         .filter(|&j| !(id == EffectId::StallOnset && j == 0))
         .any(|j| {
             let (v, se) = (fit.parameters[first + j], fit.standard_errors[first + j]);
-            (v - nominal[j]).abs() > Z95 * se
+            // An unidentifiable parameter (no information in the data) has no finite,
+            // positive standard error: it does not depart.
+            se.is_finite() && se > 0.0 && (v - nominal[j]).abs() > Z95 * se
         })
 }
 
@@ -412,6 +416,9 @@ where
     let mut evidence = Vec::new();
     let mut confounded = Vec::new();
     let mut trace = Vec::new();
+    // Candidates set aside as confounded are not tried again; the selection goes on with the
+    // others (a gap in another coefficient is still looked for).
+    let mut set_aside: Vec<EffectId> = Vec::new();
     while model.len() < options.max_effects {
         let ids: Vec<EffectId> = model.iter().map(|(e, _)| *e).collect();
         let base: Vec<f64> = model.iter().flat_map(|(_, p)| p.clone()).collect();
@@ -419,8 +426,8 @@ where
         let used: usize = ids.iter().map(|e| e.parameters().len()).sum();
         for c in candidates
             .iter()
-            .filter(|c| !ids.contains(c))
-            .filter(|c| 2 * (used + c.parameters().len()) <= n)
+            .filter(|c| !ids.contains(c) && !set_aside.contains(c))
+            .filter(|c| 2 * (nn + used + c.parameters().len()) <= n)
         {
             let mut with: Vec<EffectId> = ids.clone();
             with.push(*c);
@@ -478,7 +485,8 @@ where
                 && runner_bic - best_bic < options.confound_bic
             {
                 confounded.push(vec![best_id, *runner_id]);
-                break;
+                set_aside.extend([best_id, *runner_id]);
+                continue;
             }
         }
         // A new effect whose estimate is nearly a copy of an effect already chosen (their
@@ -486,23 +494,18 @@ where
         // data: reported, not added.
         if let Some(other) = confounded_with(&ids, best_id, &best_fit, nn) {
             confounded.push(vec![other, best_id]);
-            break;
+            set_aside.push(best_id);
+            continue;
         }
-        let p_total = best_fit.parameters.len() - nn;
+        let p_total = best_fit.parameters.len();
         let k_new = best_id.parameters().len();
         let rss_after = best_fit.chi_square;
-        let partial_f = if n > p_total && rss_after > 0.0 {
-            ((rss - rss_after) / k_new as f64) / (rss_after / (n - p_total) as f64)
-        } else {
-            f64::INFINITY
-        };
+        let partial_f = (n > p_total && rss_after > 0.0)
+            .then(|| ((rss - rss_after) / k_new as f64) / (rss_after / (n - p_total) as f64))
+            .filter(|f| f.is_finite());
         evidence.push(Evidence {
             bic_drop: current_bic - best_bic,
-            partial_f: if partial_f.is_finite() {
-                partial_f
-            } else {
-                f64::MAX
-            },
+            partial_f,
             rss_before: rss,
             rss_after,
             residuals: n,
@@ -578,7 +581,7 @@ where
                     None => (start[k], f64::NAN),
                 };
                 parameters.insert(name.to_string(), v);
-                if se.is_finite() {
+                if se.is_finite() && se > 0.0 {
                     ci95.insert(name.to_string(), [v - Z95 * se, v + Z95 * se]);
                 }
                 k += 1;
@@ -612,7 +615,7 @@ pub fn model_of(effects: &[ChosenEffect]) -> Model {
 
 /// Residual bins: each coefficient over the lower, middle and upper third of the measured
 /// angles.
-fn residual_bins(prediction: &Prediction, points: &[Point], sigma: &[f64; 3]) -> Vec<ResidualBin> {
+fn residual_bins(prediction: &Prediction, points: &[Point]) -> Vec<ResidualBin> {
     let mut alphas: Vec<f64> = points.iter().map(|p| p.alpha_deg).collect();
     alphas.sort_by(f64::total_cmp);
     alphas.dedup();
@@ -628,17 +631,22 @@ fn residual_bins(prediction: &Prediction, points: &[Point], sigma: &[f64; 3]) ->
                 continue;
             }
             let (from, to) = (alphas[cuts[b]], alphas[cuts[b + 1] - 1]);
-            let d: Vec<f64> = points
+            let (d, s2): (Vec<f64>, Vec<f64>) = points
                 .iter()
                 .filter(|p| p.alpha_deg >= from && p.alpha_deg <= to)
-                .filter_map(|p| Some(p.measured[k]? - pick(&prediction.at(p.alpha_deg)?, k)))
-                .collect();
+                .filter_map(|p| {
+                    let gap = p.measured[k]? - pick(&prediction.at(p.alpha_deg)?, k);
+                    Some((gap, p.sigma[k] * p.sigma[k]))
+                })
+                .unzip();
             if d.is_empty() {
                 continue;
             }
             let nf = d.len() as f64;
             let mean = d.iter().sum::<f64>() / nf;
-            let z = mean / (sigma[k] / nf.sqrt());
+            // The noise of the bin's mean: √(Σσ²)/n.
+            let sigma = (s2.iter().sum::<f64>() / nf).sqrt();
+            let z = mean / (sigma / nf.sqrt());
             out.push(ResidualBin {
                 coefficient: name.to_string(),
                 alpha_from_deg: from,
@@ -646,7 +654,7 @@ fn residual_bins(prediction: &Prediction, points: &[Point], sigma: &[f64; 3]) ->
                 points: d.len(),
                 mean,
                 rms: (d.iter().map(|x| x * x).sum::<f64>() / nf).sqrt(),
-                sigma: sigma[k],
+                sigma,
                 z,
                 significant: z.abs() > SIGNIFICANT_Z,
             });
@@ -655,32 +663,53 @@ fn residual_bins(prediction: &Prediction, points: &[Point], sigma: &[f64; 3]) ->
     out
 }
 
-/// Noise per longitudinal coefficient: the mean of the given `sigma_<coef>`, else estimated
-/// from the residual curve measured − predicted (its point-to-point scatter, see
-/// [`data::noise_estimate`]), with a floor of 1E-6 so that a perfect match does not divide
-/// by zero.
+/// Below this the noise estimated from the data is taken as this, with a warning: the data
+/// are a smooth table, not measurements with scatter.
+const NOISE_FLOOR: f64 = 1e-6;
+
+/// The noise of CL, CD, Cm where rows give none (none where no row needs it), and where each
+/// came from.
+type Noise = ([Option<f64>; 3], BTreeMap<String, String>);
+
+/// The noise of each longitudinal coefficient measured on `rows` where a row gives none: the
+/// pooled standard deviation of repeated angles where the data repeat an angle, else the
+/// point-to-point scatter of the residual curve measured − predicted
+/// ([`data::noise_estimate`]). An error names a coefficient whose noise can be neither read
+/// nor estimated (fewer than three angles, no repeats).
 fn noise(
     prediction: &Prediction,
     measured: &Measurement,
     rows: &[usize],
-) -> ([f64; 3], BTreeMap<String, String>) {
-    let mut sigma = [1.0; 3];
+    warnings: &mut Vec<String>,
+) -> Result<Noise, DiscrepancyError> {
+    let mut sigma = [None; 3];
     let mut source = BTreeMap::new();
     for (k, name) in LONGITUDINAL.iter().enumerate() {
-        let given: Vec<f64> = measured
-            .sigma
-            .get(*name)
-            .map(|s| rows.iter().filter_map(|&r| s[r]).collect())
-            .unwrap_or_default();
-        if !given.is_empty() {
-            sigma[k] = given.iter().sum::<f64>() / given.len() as f64;
-            source.insert(name.to_string(), format!("given (sigma_{name})"));
-            continue;
-        }
         let Some(values) = measured.values.get(*name) else {
             continue;
         };
-        let mut pairs: Vec<(f64, f64)> = rows
+        let given = measured.sigma.get(*name);
+        let measured_rows: Vec<usize> = rows
+            .iter()
+            .copied()
+            .filter(|&r| values[r].is_some())
+            .collect();
+        if measured_rows.is_empty() {
+            continue;
+        }
+        let unsigned: Vec<usize> = measured_rows
+            .iter()
+            .copied()
+            .filter(|&r| given.and_then(|g| g[r]).is_none())
+            .collect();
+        if unsigned.is_empty() {
+            source.insert(
+                name.to_string(),
+                format!("given (sigma_{name}) at every row"),
+            );
+            continue;
+        }
+        let mut pairs: Vec<(f64, f64)> = measured_rows
             .iter()
             .filter_map(|&r| {
                 let a = measured.alpha_deg[r];
@@ -688,14 +717,61 @@ fn noise(
             })
             .collect();
         pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (x, y): (Vec<f64>, Vec<f64>) = pairs.into_iter().unzip();
-        sigma[k] = data::noise_estimate(&x, &y).unwrap_or(1.0).max(1e-6);
+        let (estimate, how) = match pooled_repeats(&pairs) {
+            Some(s) => (Some(s), "the pooled scatter of repeated angles"),
+            None => {
+                let (x, y): (Vec<f64>, Vec<f64>) = pairs.iter().copied().unzip();
+                (
+                    data::noise_estimate(&x, &y),
+                    "the point-to-point scatter of the residuals",
+                )
+            }
+        };
+        let Some(estimate) = estimate else {
+            return Err(DiscrepancyError::Invalid {
+                reason: format!(
+                    "the noise of {name} cannot be estimated from {} measured angle(s) without repeats (hint: give --sigma {name}=... or a sigma_{name} column)",
+                    pairs.len()
+                ),
+            });
+        };
+        if estimate < NOISE_FLOOR {
+            warnings.push(format!(
+                "the noise of {name} is estimated as about 0 (a smooth table rather than scattered measurements?): taken as {NOISE_FLOOR}, which makes every gap significant (hint: give --sigma {name}=...)"
+            ));
+        }
+        sigma[k] = Some(estimate.max(NOISE_FLOOR));
+        let rows_given = measured_rows.len() - unsigned.len();
         source.insert(
             name.to_string(),
-            "estimated from the scatter of the residuals".to_string(),
+            if rows_given > 0 {
+                format!(
+                    "given (sigma_{name}) at {rows_given} row(s), elsewhere estimated from {how}"
+                )
+            } else {
+                format!("estimated from {how}")
+            },
         );
     }
-    (sigma, source)
+    Ok((sigma, source))
+}
+
+/// The pooled standard deviation of the values at repeated angles (`pairs` sorted by angle),
+/// when some angle is repeated.
+fn pooled_repeats(pairs: &[(f64, f64)]) -> Option<f64> {
+    let mut sum = 0.0;
+    let (mut dof, mut i) = (0usize, 0usize);
+    while i < pairs.len() {
+        let j = i + pairs[i..].iter().take_while(|p| p.0 == pairs[i].0).count();
+        let group = &pairs[i..j];
+        if group.len() > 1 {
+            let mean = group.iter().map(|p| p.1).sum::<f64>() / group.len() as f64;
+            sum += group.iter().map(|p| (p.1 - mean).powi(2)).sum::<f64>();
+            dof += group.len() - 1;
+        }
+        i = j;
+    }
+    (dof > 0).then(|| (sum / dof as f64).sqrt())
 }
 
 /// The workflow on static data (see the module documentation and [`Options`]).
@@ -734,19 +810,35 @@ pub fn analyse_static(
         .filter(|&r| (lo..=hi).contains(&measured.alpha_deg[r]))
         .collect();
     let column = |name: &str, r: usize| measured.values.get(name).and_then(|v| v[r]);
+    let (default_sigma, sigma_source) = noise(prediction, measured, &rows, &mut warnings)?;
+    let row_sigma = |k: usize, r: usize| {
+        measured
+            .sigma
+            .get(LONGITUDINAL[k])
+            .and_then(|s| s[r])
+            .or(default_sigma[k])
+            .unwrap_or(1.0)
+    };
     let mut points: Vec<Point> = rows
         .iter()
         .map(|&r| Point {
             alpha_deg: measured.alpha_deg[r],
             measured: [column("CL", r), column("CD", r), column("Cm", r)],
+            sigma: [row_sigma(0, r), row_sigma(1, r), row_sigma(2, r)],
         })
         .filter(|p| p.measured.iter().any(Option::is_some))
         .collect();
     if points.is_empty() {
-        return Err(DiscrepancyError::NoOverlap { from: lo, to: hi });
+        return Err(match options.alpha_range_deg {
+            Some((a, b)) => DiscrepancyError::Invalid {
+                reason: format!(
+                    "no measured point with beta 0 and CL, CD or Cm lies in --alpha-range {a},{b} within the prediction's angles ({lo} to {hi} deg)"
+                ),
+            },
+            None => DiscrepancyError::NoOverlap { from: lo, to: hi },
+        });
     }
     points.sort_by(|a, b| a.alpha_deg.total_cmp(&b.alpha_deg));
-    let (sigma, sigma_source) = noise(prediction, measured, &rows);
     let mut candidates = options.candidates.clone();
     if prediction.tail_cl.is_none() || prediction.tail_cm.is_none() {
         if candidates.contains(&EffectId::TailEfficiency) {
@@ -775,9 +867,8 @@ pub fn analyse_static(
         .map(|(_, p)| p)
         .collect();
     let all: Vec<&Point> = points.iter().collect();
-    let on_training =
-        |m: &Model, _: &[f64]| static_residuals(prediction, &training, &sigma, &as_refs(m));
-    let on_all = |m: &Model, _: &[f64]| static_residuals(prediction, &all, &sigma, &as_refs(m));
+    let on_training = |m: &Model, _: &[f64]| static_residuals(prediction, &training, &as_refs(m));
+    let on_all = |m: &Model, _: &[f64]| static_residuals(prediction, &all, &as_refs(m));
     let alphas: Vec<f64> = points.iter().map(|p| p.alpha_deg).collect();
     let none = Nuisance::default();
     let selection =
@@ -795,12 +886,11 @@ pub fn analyse_static(
         validation_rms_after: rms(prediction, &held_out, &selection.model),
         effects,
         confounded: selection.confounded,
-        residuals: residual_bins(prediction, &points, &sigma),
+        residuals: residual_bins(prediction, &points),
         sigma: LONGITUDINAL
             .iter()
-            .zip(sigma)
-            .filter(|(n, _)| sigma_source.contains_key(**n))
-            .map(|(n, s)| (n.to_string(), s))
+            .zip(default_sigma)
+            .filter_map(|(n, s)| Some((n.to_string(), s?)))
             .collect(),
         sigma_source,
         criterion: "BIC = chi-square + k ln n, added when it falls by more than min_bic_drop",
@@ -818,15 +908,17 @@ fn map_line(m: &BTreeMap<String, f64>) -> String {
 
 fn effect_lines(effects: &[ChosenEffect], out: &mut String) {
     if effects.is_empty() {
-        out.push_str("no effect is missing: nothing lowers BIC enough\n");
+        out.push_str("no effect named: none lowers BIC enough with its interval excluding no effect (or those that do are confounded, below)\n");
     }
     for (k, e) in effects.iter().enumerate() {
         out.push_str(&format!(
-            "{}. {} (BIC falls {:.1}, partial F {:.1})\n   {}\n",
+            "{}. {} (BIC falls {:.1}, partial F {})\n   {}\n",
             k + 1,
             e.id.name(),
             e.evidence.bic_drop,
-            e.evidence.partial_f,
+            e.evidence
+                .partial_f
+                .map_or("- (exact fit)".to_string(), |f| format!("{f:.1}")),
             e.description
         ));
         for (name, v) in &e.parameters {

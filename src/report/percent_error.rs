@@ -273,7 +273,22 @@ impl Reference {
                 });
             }
         }
+        if r.values.is_empty() {
+            return Err(ReferenceError::Syntax {
+                file: file.to_string(),
+                reason: "no [[values]]: a reference file gives at least one derivative".into(),
+            });
+        }
         for (index, v) in r.values.iter().enumerate() {
+            if r.values[..index].iter().any(|w| w.name == v.name) {
+                return Err(ReferenceError::Syntax {
+                    file: file.to_string(),
+                    reason: format!(
+                        "values[{index}]: {} is given twice (one value per derivative)",
+                        v.name
+                    ),
+                });
+            }
             if known(&v.name).is_none() {
                 return Err(ReferenceError::UnknownDerivative {
                     file: file.to_string(),
@@ -383,7 +398,11 @@ fn our_value(entry: &ConditionResults, name: &str, alpha_deg: f64) -> (Option<f6
         [(a, v)] if *a == entry.alpha_deg[0] && entry.alpha_deg.len() > 1 => {
             (Some(*v), "one value per configuration (first row)".into())
         }
-        [(a, v)] => (Some(*v), format!("at alpha {a} deg")),
+        [(a, v)] if *a == alpha_deg => (Some(*v), format!("at alpha {a} deg")),
+        [(a, _)] => (
+            None,
+            format!("computed at alpha {a} deg only, not at {alpha_deg} deg"),
+        ),
         _ => interpolate(&points, alpha_deg),
     }
 }
@@ -432,12 +451,10 @@ fn find_entry<'a>(
         })
         .collect();
     if at_condition.is_empty() {
-        let mut machs: Vec<String> = case
-            .conditions
-            .iter()
-            .map(|e| format!("{}", e.condition.mach))
-            .collect();
+        let mut machs: Vec<f64> = case.conditions.iter().map(|e| e.condition.mach).collect();
+        machs.sort_by(f64::total_cmp);
         machs.dedup();
+        let machs: Vec<String> = machs.iter().map(|m| format!("{m}")).collect();
         return Err(ReferenceError::NoCondition {
             case: case.number,
             mach: c.mach,
