@@ -18,9 +18,10 @@ use datcom::case::{Case, Deck, SectionReynolds};
 use datcom::charts;
 use datcom::methods::body::subsonic_limit;
 use datcom::methods::tail::{
-    configuration, downwash_gradient_at_tail, downwash_method, effective_aspect_ratio_ratio,
-    empirical_downwash_gradient, figures, horizontal_tail_alone, tail_placement, wing_wake,
-    Coefficients, ConfigurationTotals, DownwashMethod, HorizontalTailAlone,
+    canard_vortex, configuration, downwash_gradient_at_tail, downwash_method,
+    effective_aspect_ratio_ratio, empirical_downwash_gradient, figures, horizontal_tail_alone,
+    tail_placement, wing_wake, CanardInputs, Coefficients, ConfigurationTotals, DownwashMethod,
+    HorizontalTailAlone,
 };
 use datcom::report::compare::agrees;
 use datcom::report::legacy::{self, ListedCondition};
@@ -58,30 +59,30 @@ const FLOORS: &[(&str, &str, &str, &str, usize)] = &[
     ("flight", "all", "HT", "XCP", 40),
     ("flight", "all", "HT", "CLA", 36),
     ("flight", "all", "HT", "CMA", 36),
-    ("flight", "all", "WBH", "CD", 29),
-    ("flight", "all", "WBH", "CL", 29),
-    ("flight", "all", "WBH", "CM", 32),
-    ("flight", "all", "WBH", "CN", 29),
-    ("flight", "all", "WBH", "CA", 31),
-    ("flight", "all", "WBH", "XCP", 30),
-    ("flight", "all", "WBH", "CLA", 27),
-    ("flight", "all", "WBH", "CMA", 33),
+    ("flight", "all", "WBH", "CD", 49),
+    ("flight", "all", "WBH", "CL", 49),
+    ("flight", "all", "WBH", "CM", 52),
+    ("flight", "all", "WBH", "CN", 49),
+    ("flight", "all", "WBH", "CA", 51),
+    ("flight", "all", "WBH", "XCP", 50),
+    ("flight", "all", "WBH", "CLA", 47),
+    ("flight", "all", "WBH", "CMA", 53),
     ("flight", "all", "WBV", "CD", 27),
     ("flight", "all", "WBV", "CL", 30),
     ("flight", "all", "WBV", "CM", 34),
     ("flight", "all", "WBV", "CN", 30),
-    ("flight", "all", "WBV", "CA", 33),
+    ("flight", "all", "WBV", "CA", 34),
     ("flight", "all", "WBV", "XCP", 31),
     ("flight", "all", "WBV", "CLA", 29),
     ("flight", "all", "WBV", "CMA", 28),
-    ("flight", "all", "WBHV", "CD", 169),
-    ("flight", "all", "WBHV", "CL", 118),
-    ("flight", "all", "WBHV", "CM", 153),
-    ("flight", "all", "WBHV", "CN", 122),
-    ("flight", "all", "WBHV", "CA", 135),
-    ("flight", "all", "WBHV", "XCP", 139),
+    ("flight", "all", "WBHV", "CD", 175),
+    ("flight", "all", "WBHV", "CL", 119),
+    ("flight", "all", "WBHV", "CM", 157),
+    ("flight", "all", "WBHV", "CN", 123),
+    ("flight", "all", "WBHV", "CA", 142),
+    ("flight", "all", "WBHV", "XCP", 140),
     ("flight", "all", "WBHV", "CLA", 134),
-    ("flight", "all", "WBHV", "CMA", 180),
+    ("flight", "all", "WBHV", "CMA", 181),
     ("flight", "complete", "DOWNWASH", "Q/QINF", 72),
     ("flight", "complete", "DOWNWASH", "EPSLON", 72),
     ("flight", "complete", "DOWNWASH", "D(EPSLON)/D(ALPHA)", 72),
@@ -93,14 +94,14 @@ const FLOORS: &[(&str, &str, &str, &str, usize)] = &[
     ("flight", "complete", "HT", "XCP", 27),
     ("flight", "complete", "HT", "CLA", 27),
     ("flight", "complete", "HT", "CMA", 27),
-    ("flight", "complete", "WBH", "CD", 27),
-    ("flight", "complete", "WBH", "CL", 27),
-    ("flight", "complete", "WBH", "CM", 27),
-    ("flight", "complete", "WBH", "CN", 27),
-    ("flight", "complete", "WBH", "CA", 27),
-    ("flight", "complete", "WBH", "XCP", 27),
-    ("flight", "complete", "WBH", "CLA", 27),
-    ("flight", "complete", "WBH", "CMA", 27),
+    ("flight", "complete", "WBH", "CD", 37),
+    ("flight", "complete", "WBH", "CL", 37),
+    ("flight", "complete", "WBH", "CM", 37),
+    ("flight", "complete", "WBH", "CN", 37),
+    ("flight", "complete", "WBH", "CA", 37),
+    ("flight", "complete", "WBH", "XCP", 37),
+    ("flight", "complete", "WBH", "CLA", 37),
+    ("flight", "complete", "WBH", "CMA", 37),
     ("flight", "complete", "WBV", "CD", 18),
     ("flight", "complete", "WBV", "CL", 18),
     ("flight", "complete", "WBV", "CM", 18),
@@ -128,15 +129,15 @@ const FLOORS: &[(&str, &str, &str, &str, usize)] = &[
     ("original", "all", "HT", "XCP", 40),
     ("original", "all", "HT", "CLA", 40),
     ("original", "all", "HT", "CMA", 40),
-    ("original", "all", "WBH", "CD", 40),
-    ("original", "all", "WBH", "CL", 40),
-    ("original", "all", "WBH", "CM", 40),
-    ("original", "all", "WBH", "CN", 40),
-    ("original", "all", "WBH", "CA", 40),
-    ("original", "all", "WBH", "XCP", 40),
-    ("original", "all", "WBH", "CLA", 40),
-    ("original", "all", "WBH", "CMA", 40),
-    ("original", "all", "WBV", "CD", 38),
+    ("original", "all", "WBH", "CD", 60),
+    ("original", "all", "WBH", "CL", 60),
+    ("original", "all", "WBH", "CM", 60),
+    ("original", "all", "WBH", "CN", 60),
+    ("original", "all", "WBH", "CA", 60),
+    ("original", "all", "WBH", "XCP", 60),
+    ("original", "all", "WBH", "CLA", 60),
+    ("original", "all", "WBH", "CMA", 60),
+    ("original", "all", "WBV", "CD", 40),
     ("original", "all", "WBV", "CL", 51),
     ("original", "all", "WBV", "CM", 51),
     ("original", "all", "WBV", "CN", 51),
@@ -144,14 +145,14 @@ const FLOORS: &[(&str, &str, &str, &str, usize)] = &[
     ("original", "all", "WBV", "XCP", 51),
     ("original", "all", "WBV", "CLA", 51),
     ("original", "all", "WBV", "CMA", 51),
-    ("original", "all", "WBHV", "CD", 225),
-    ("original", "all", "WBHV", "CL", 189),
-    ("original", "all", "WBHV", "CM", 196),
-    ("original", "all", "WBHV", "CN", 193),
-    ("original", "all", "WBHV", "CA", 188),
-    ("original", "all", "WBHV", "XCP", 178),
-    ("original", "all", "WBHV", "CLA", 240),
-    ("original", "all", "WBHV", "CMA", 252),
+    ("original", "all", "WBHV", "CD", 245),
+    ("original", "all", "WBHV", "CL", 204),
+    ("original", "all", "WBHV", "CM", 203),
+    ("original", "all", "WBHV", "CN", 208),
+    ("original", "all", "WBHV", "CA", 205),
+    ("original", "all", "WBHV", "XCP", 189),
+    ("original", "all", "WBHV", "CLA", 258),
+    ("original", "all", "WBHV", "CMA", 266),
     ("original", "complete", "DOWNWASH", "Q/QINF", 72),
     ("original", "complete", "DOWNWASH", "EPSLON", 72),
     ("original", "complete", "DOWNWASH", "D(EPSLON)/D(ALPHA)", 72),
@@ -163,14 +164,14 @@ const FLOORS: &[(&str, &str, &str, &str, usize)] = &[
     ("original", "complete", "HT", "XCP", 27),
     ("original", "complete", "HT", "CLA", 27),
     ("original", "complete", "HT", "CMA", 27),
-    ("original", "complete", "WBH", "CD", 27),
-    ("original", "complete", "WBH", "CL", 27),
-    ("original", "complete", "WBH", "CM", 27),
-    ("original", "complete", "WBH", "CN", 27),
-    ("original", "complete", "WBH", "CA", 27),
-    ("original", "complete", "WBH", "XCP", 27),
-    ("original", "complete", "WBH", "CLA", 27),
-    ("original", "complete", "WBH", "CMA", 27),
+    ("original", "complete", "WBH", "CD", 37),
+    ("original", "complete", "WBH", "CL", 37),
+    ("original", "complete", "WBH", "CM", 37),
+    ("original", "complete", "WBH", "CN", 37),
+    ("original", "complete", "WBH", "CA", 37),
+    ("original", "complete", "WBH", "XCP", 37),
+    ("original", "complete", "WBH", "CLA", 37),
+    ("original", "complete", "WBH", "CMA", 37),
     ("original", "complete", "WBV", "CD", 18),
     ("original", "complete", "WBV", "CL", 18),
     ("original", "complete", "WBV", "CM", 18),
@@ -778,6 +779,13 @@ const SPOTS: &[(&str, &[f64], f64)] = &[
     ("4.4.1-68b", &[0.0, 0.833], 1.34),
     ("4.4.1-68b", &[0.2, 0.6], 0.98),
     ("4.4.1-68b", &[1.0, 1.5], 0.27),
+    // X41603, X41601, X41602, Y44160 48712-48728 (taper, A tan LE, beta A): Y(1,1,1) at
+    // (0, -4, 0) = 0.785; Y(2,1,1) at (0, -4, 1) = 0.6014; Y(9,3,2) at (0.5, 0, 8) = 0.7728;
+    // Y(2,5,3) at (1, 4, 1) = 0.9866
+    ("4.4.1-71", &[0.0, -4.0, 0.0], 0.785),
+    ("4.4.1-71", &[0.0, -4.0, 1.0], 0.6014),
+    ("4.4.1-71", &[0.5, 0.0, 8.0], 0.7728),
+    ("4.4.1-71", &[1.0, 4.0, 1.0], 0.9866),
 ];
 
 #[test]
@@ -794,4 +802,136 @@ fn tail_charts_give_their_data_statement_values() {
         + y[2] * (a - x[0]) * (a - x[1]) / ((x[2] - x[0]) * (x[2] - x[1]));
     assert!((l.value.unwrap() - q).abs() < 1e-12);
     assert_eq!(l.warnings.len(), 1);
+}
+
+/// A canard configuration made up for the tests: the canard is the deck's wing, the main wing
+/// the deck's horizontal tail (span ratio 1.7/4.5, so downwash method 3).
+const CANARD_DECK: &str =
+    " $FLTCON NMACH=1.0,MACH(1)=0.3,NALPHA=5.0,ALSCHD(1)=0.0,4.0,8.0,12.0,16.0,
+   RNNUB(1)=2.0E6$
+ $OPTINS SREF=20.0,CBARR=2.5,BLREF=9.0$
+ $SYNTHS XCG=5.0,ZCG=0.0,XW=1.5,ZW=0.3,ALIW=2.0,XH=5.0,ZH=0.0,ALIH=1.0$
+ $BODY NX=6.0,X(1)=0.0,1.0,2.0,6.0,8.0,9.0,R(1)=0.0,0.4,0.5,0.5,0.4,0.2$
+ $WGPLNF CHRDTP=0.3,SSPNE=1.2,SSPN=1.7,CHRDR=1.2,SAVSI=30.0,CHSTAT=0.0,TYPE=1.0$
+ $HTPLNF CHRDTP=0.8,SSPNE=4.0,SSPN=4.5,CHRDR=3.0,SAVSI=30.0,CHSTAT=0.0,TYPE=1.0$
+NACA-W-4-0009
+NACA-H-4-0012
+CASEID CANARD TEST
+";
+
+#[test]
+fn canard_totals_are_sums_of_named_terms() {
+    let deck = datcom::read_deck(CANARD_DECK, "canard.dcm");
+    let case = &deck.cases[0];
+    let alpha = case.flight.as_ref().unwrap().alpha_deg.clone();
+    let r = configuration(case, 0, &alpha).expect("canard configuration");
+    assert!(r.terms.downwash.is_none());
+    let c = r.terms.canard.as_ref().expect("canard terms");
+    let wb = &r.terms.wing_body;
+    let tb = r.terms.tail_body.as_ref().expect("tail-body terms");
+    let wbh = r.wing_body_horizontal_tail.as_ref().expect("WBH page");
+    let mut checked = 0;
+    for (k, a) in alpha.iter().enumerate() {
+        let (Some(t), Some(v)) = (tb.at_angle[k], c.vortex.at_angle[k]) else {
+            continue;
+        };
+        // No downwash at the aft surface: the canard's effect is its vortex lift.
+        assert_eq!(t.epsilon_deg, 0.0);
+        assert_eq!(
+            t.dynamic_pressure_ratio,
+            c.dynamic_pressure_ratio[k].unwrap()
+        );
+        assert!(
+            v.lift_slope_per_rad < 0.0,
+            "the vortices inboard of the tips lower the lift"
+        );
+        assert_eq!(v.lift, v.lift_slope_per_rad * a.to_radians());
+        assert_eq!(
+            wbh.cl[k],
+            Some(wb.cl[k].unwrap() + t.lift + t.vortex_lift + v.lift)
+        );
+        assert_eq!(wbh.cd[k], Some(wb.cd[k].unwrap() + t.drag));
+        assert_eq!(
+            wbh.cm[k],
+            Some(
+                wb.cm[k].unwrap()
+                    + t.moment_of_normal_force
+                    + t.moment_of_axial_force
+                    + t.zero_lift_moment
+                    + c.moment[k].unwrap()
+            )
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, alpha.len());
+    let f = r.terms.first_slopes.expect("first slopes");
+    let (t, v) = (tb.at_angle[0].unwrap(), c.vortex.at_angle[0].unwrap());
+    let k = tb.interference.wing_in_presence_of_body + tb.interference.body_in_presence_of_wing;
+    let tail = r.terms.horizontal_tail.as_ref().unwrap();
+    let expected = wb.cla_per_rad[0].unwrap()
+        + k * tail.slope_per_rad * t.dynamic_pressure_ratio
+        + v.lift_slope_per_rad;
+    assert!((f.cla_per_rad - expected).abs() < 1e-12 * expected.abs());
+    assert_eq!(wbh.cla_per_rad[0], Some(f.cla_per_rad));
+}
+
+#[test]
+fn canard_vortex_by_hand() {
+    // Chart 4.4.1-71 at a node: taper 0.5, A tan(LE) 0, beta A 8 gives 0.7728.
+    let inputs = CanardInputs {
+        canard_aspect_ratio: 8.0,
+        canard_taper: 0.5,
+        canard_tan_leading_edge: 0.0,
+        canard_tan_trailing_edge: -0.1,
+        canard_semispan: 1.7,
+        canard_exposed_semispan: 1.2,
+        beta: 1.0,
+        canard_slope_per_rad: 0.5,
+        canard_in_presence_of_body: 1.1,
+        canard_incidence_deg: 1.0,
+        canard_zero_lift_deg: -1.0,
+        aft_semispan: 4.5,
+        aft_exposed_semispan: 4.0,
+        aft_exposed_taper: 0.3,
+        aft_exposed_aspect_ratio: 6.0,
+        aft_exposed_area: 10.0,
+        aft_slope_per_rad: 2.5,
+        aft_interference_sum: 1.2,
+        aft_incidence_deg: 0.0,
+        aft_zero_lift_deg: 0.0,
+        arm: 3.0,
+        height: 0.2,
+        reference_area: 20.0,
+    };
+    let mut warnings = Vec::new();
+    let v = canard_vortex(
+        &inputs,
+        &[0.0, 4.0],
+        &[Some(0.95), Some(0.9)],
+        &mut warnings,
+    )
+    .unwrap();
+    assert!(warnings.is_empty());
+    assert_eq!(v.exposed_span_fraction, 0.7728);
+    // y_v = 1.2 · 0.7728 + 0.5 = 1.42736 m from the centre line.
+    assert!((v.lateral_position - 1.42736).abs() < 1e-12);
+    let a = v.at_angle[1].unwrap();
+    // z_v = 0.2 − (3 + 0.1 · 1.42736) tan(5°) = −0.074937...
+    let z = 0.2 - (3.0 + 0.142736) * 5.0_f64.to_radians().tan();
+    assert!((a.height - z).abs() < 1e-12);
+    let i = datcom::methods::wing_body::vortex_interference_factor(z, 1.42736, 4.5, 0.5, 0.3);
+    assert_eq!(a.interference_factor, i);
+    // ΔCLα = 0.5 · 2.5 · 0.9 · 1.1 · i · 4 / (2π · 6 · 0.92736) · 20/10.
+    let slope =
+        0.5 * 2.5 * 0.9 * 1.1 * i * 4.0 / (2.0 * std::f64::consts::PI * 6.0 * 0.92736) * 2.0;
+    assert!((a.lift_slope_per_rad - slope).abs() < 1e-12);
+    assert!((a.lift - slope * 4.0_f64.to_radians()).abs() < 1e-14);
+    let gradient = -slope / (1.2 * 2.5 * 0.9);
+    assert!((a.effective_gradient - gradient).abs() < 1e-12);
+    // ε_eff from the canard's zero-lift angle: (4 + 1 + 1)°.
+    assert!((a.effective_epsilon_deg - 6.0 * gradient).abs() < 1e-12);
+    // At α = 0 the aft surface is at its zero-lift angle: ε_eff 0, no lift increment.
+    let b = v.at_angle[0].unwrap();
+    assert_eq!(b.effective_epsilon_deg, 0.0);
+    assert_eq!(b.lift, 0.0);
 }

@@ -132,6 +132,10 @@ pub struct ConfigurationDynamic {
 ///   times l_H/c̄ on the first row, CLα̇ and Cmα̇ the same times dε/dα at every angle (the
 ///   tail's terms alone where the wing-body has no α̇ method, as the original), l_H from XCG to
 ///   the tail's aerodynamic centre, no α̇ term for a wing semispan under 1.5 tail semispans;
+///   for a canard configuration (no downwash table) q/q∞ is the canard's wake and the lift
+///   slope ΔCLα the canard's vortices induce on the aft surface joins the pitch-rate
+///   increment, (2 (K_H(B) + K_B(H)) CLα_H q/q∞ + ΔCLα) l_H/c̄, and with a pointed canard
+///   (exposed taper 0) gives CLα̇ −2 (l_H/c̄) ΔCLα and Cmα̇ +2 (l_H/c̄)² ΔCLα (DNPWBT);
 ///   its (halved) Clp; nothing else;
 /// - the vertical tail and the ventral fin: [`fin_dynamic`] (Clp, CYp, Cnp, Cnr, Clr).
 ///
@@ -219,11 +223,26 @@ fn pitch_increments(
 ) -> Result<(), DynamicError> {
     let n = wing_body.alpha_deg.len();
     let t = &totals.terms;
-    let (Some(tail), Some(downwash), Some(tail_body)) =
-        (&t.horizontal_tail, &t.downwash, &t.tail_body)
-    else {
+    let (Some(tail), Some(tail_body)) = (&t.horizontal_tail, &t.tail_body) else {
         return Ok(());
     };
+    // q/q∞ and dε/dα at the tail, and for a canard configuration the lift slope the canard's
+    // vortices induce on the aft surface (per rad).
+    type Rows<'a> = &'a [Option<f64>];
+    let (dynamic_pressure_ratio, gradient, canard_slope): (Rows, Rows, Vec<Option<f64>>) =
+        match (&t.downwash, &t.canard) {
+            (Some(d), _) => (&d.dynamic_pressure_ratio, &d.gradient, vec![Some(0.0); n]),
+            (None, Some(c)) => (
+                &c.dynamic_pressure_ratio,
+                &[],
+                c.vortex
+                    .at_angle
+                    .iter()
+                    .map(|a| a.map(|a| a.lift_slope_per_rad))
+                    .collect(),
+            ),
+            (None, None) => return Ok(()),
+        };
     let ht = case
         .horizontal_tail
         .as_ref()
@@ -251,27 +270,37 @@ fn pitch_increments(
     let Some(cla) = tail.cla_per_rad.first().copied().flatten() else {
         return Ok(());
     };
+    let vortex_slope = |row: usize| canard_slope.get(row).copied().flatten();
     let increment = |row: usize| {
-        downwash
-            .dynamic_pressure_ratio
-            .get(row)
-            .copied()
-            .flatten()
-            .and_then(|q| finite(2.0 * k * q * arm * cla))
+        let q = dynamic_pressure_ratio.get(row).copied().flatten()?;
+        finite((2.0 * k * q * cla + vortex_slope(row)?) * arm)
     };
     let first = increment(0);
     out.clq = Column::first(n, first);
     out.cmq = Column::first(n, first.map(|i| -i * arm));
     let ratio = wing.sspn.unwrap_or(0.0) / semispan;
     if ratio < CONVENTIONAL_SPAN_RATIO {
-        // No tail α̇ term.
+        // No tail α̇ term, but for a pointed forward surface (exposed taper 0) the lag of the
+        // canard's vortices on the aft surface: CLα̇ −2 (l_H/c̄) ΔCLα, Cmα̇ +2 (l_H/c̄)² ΔCLα.
+        let pointed = totals.terms.wing_body.terms.wing.terms.planform.taper == 0.0;
+        if pointed && t.canard.is_some() {
+            let rows = |f: &dyn Fn(f64) -> f64| {
+                Column::rows(
+                    (0..n)
+                        .map(|row| vortex_slope(row).and_then(|d| finite(f(d))))
+                        .collect(),
+                )
+            };
+            out.clad = rows(&|d| -2.0 * arm * d);
+            out.cmad = rows(&|d| 2.0 * arm * arm * d);
+        }
         return Ok(());
     }
     let rows = |f: &dyn Fn(f64, f64) -> f64| {
         Column::rows(
             (0..n)
                 .map(|row| {
-                    let e = downwash.gradient.get(row).copied().flatten()?;
+                    let e = gradient.get(row).copied().flatten()?;
                     increment(row).map(|i| f(i, e))
                 })
                 .collect(),

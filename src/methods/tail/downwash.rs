@@ -279,6 +279,78 @@ fn integration_points(a: f64) -> usize {
     ((a.abs() + 1.5).floor() as usize).clamp(2, 21)
 }
 
+/// The tail's placement behind the wing of geometry `wing` (see [`tail_placement`]), from the
+/// case's positions and incidences and the tail's exposed-MAC quarter chord.
+pub(crate) fn placement_of(
+    case: &Case,
+    wing: &crate::geometry::PlanformGeometry,
+    tail: &HorizontalTailAlone,
+) -> TailPlacement {
+    let s = case.synthesis.as_ref();
+    let get = |f: fn(&crate::case::Synthesis) -> Option<f64>| s.and_then(f).unwrap_or(0.0);
+    let tp = &tail.surface.terms.planform;
+    let chrdr = case.wing.as_ref().and_then(|w| w.chrdr).unwrap_or(0.0);
+    let tail_quarter_chord = tp.x_mac_mid_chord - tp.mac / 4.0
+        + (tp.semispan - tp.exposed_semispan) * tp.inboard.leading_edge.tan;
+    tail_placement(
+        (get(|s| s.xw), get(|s| s.zw)),
+        get(|s| s.aliw_deg),
+        chrdr,
+        wing.x_mac_le,
+        tail_position(s),
+        get(|s| s.alih_deg),
+        tail_quarter_chord,
+    )
+}
+
+/// The wing's wake at the tail at each wing angle `wing_alpha_deg` (α + ALIW), see
+/// [`wing_wake`]: none where the wing has no CL or no zero-lift drag (then a warning).
+pub(crate) fn wakes_of(
+    wb: &WingBody,
+    wing_alpha_deg: &[f64],
+    placement: &TailPlacement,
+    warnings: &mut Vec<TailWarning>,
+) -> Vec<Option<Wake>> {
+    let wing = &wb.terms.wing;
+    let p = &wing.terms.planform;
+    let area_ratio = wb.reference_area / p.exposed_area;
+    let cd0 = wing
+        .terms
+        .zero_lift_drag
+        .as_ref()
+        .map(|d| d.total * area_ratio);
+    if cd0.is_none() {
+        warnings.push(TailWarning::NoWingZeroLiftDrag);
+    }
+    wing_alpha_deg
+        .iter()
+        .enumerate()
+        .map(|(k, &a)| {
+            let cl = wing.cl.get(k).copied()?? * area_ratio;
+            Some(wing_wake(
+                p.aspect_ratio,
+                p.mac,
+                cl,
+                cd0?,
+                a,
+                placement.arm,
+                placement.angle_rad,
+            ))
+        })
+        .collect()
+}
+
+/// q/q∞ of each wake (none where the wake or its value is not finite).
+pub(crate) fn dynamic_pressure_ratios(wakes: &[Option<Wake>]) -> Vec<Option<f64>> {
+    wakes
+        .iter()
+        .map(|w| {
+            w.map(|w| w.dynamic_pressure_ratio)
+                .filter(|v| v.is_finite())
+        })
+        .collect()
+}
+
 /// DATCOM 4.4.1 at subsonic speeds with the wing-body `wb` and the tail `tail` computed:
 /// see [`super::downwash`].
 pub(crate) fn downwash_from(
@@ -315,21 +387,11 @@ pub(crate) fn downwash_from(
     }
     let s = case.synthesis.as_ref();
     let get = |f: fn(&crate::case::Synthesis) -> Option<f64>| s.and_then(f).unwrap_or(0.0);
-    let (xw, zw, aliw) = (get(|s| s.xw), get(|s| s.zw), get(|s| s.aliw_deg));
+    let (xw, aliw) = (get(|s| s.xw), get(|s| s.aliw_deg));
     let alih = get(|s| s.alih_deg);
     let tail_apex = tail_position(s);
     let chrdr = plan.chrdr.unwrap_or(0.0);
-    let tail_quarter_chord = tp.x_mac_mid_chord - tp.mac / 4.0
-        + (tp.semispan - tp.exposed_semispan) * tp.inboard.leading_edge.tan;
-    let placement = tail_placement(
-        (xw, zw),
-        aliw,
-        chrdr,
-        geometry.x_mac_le,
-        tail_apex,
-        alih,
-        tail_quarter_chord,
-    );
+    let placement = placement_of(case, &geometry, tail);
     let low =
         low_speed_wing(case, condition_index, alpha_deg)?.ok_or(TailError::NoLowSpeedMaxLift)?;
     let (a126, a127) = (low.zero_lift_alpha_deg, low.max_lift_alpha_deg);
@@ -470,37 +532,10 @@ pub(crate) fn downwash_from(
         .map(|&a| read(alpha_deg, &epsilon, a, End::Linear, End::Linear).map(|r| r.1))
         .collect();
 
-    let cd0 = wing
-        .terms
-        .zero_lift_drag
-        .as_ref()
-        .map(|d| d.total * area_ratio);
-    let wakes: Vec<Option<Wake>> = (0..n)
-        .map(|k| {
-            let cl = wing.cl[k]? * area_ratio;
-            Some(wing_wake(
-                a7,
-                p.mac,
-                cl,
-                cd0?,
-                wing_alpha[k],
-                placement.arm,
-                placement.angle_rad,
-            ))
-        })
-        .collect();
-    if cd0.is_none() {
-        warnings.push(TailWarning::NoWingZeroLiftDrag);
-    }
+    let wakes = wakes_of(wb, &wing_alpha, &placement, &mut warnings);
     Ok(Downwash {
         alpha_deg: alpha_deg.to_vec(),
-        dynamic_pressure_ratio: wakes
-            .iter()
-            .map(|w| {
-                w.map(|w| w.dynamic_pressure_ratio)
-                    .filter(|v| v.is_finite())
-            })
-            .collect(),
+        dynamic_pressure_ratio: dynamic_pressure_ratios(&wakes),
         epsilon_deg: epsilon,
         gradient,
         terms: DownwashTerms {

@@ -10,8 +10,16 @@ pub const LEADING_EDGE_SEPARATION: &str = "4.4.1-68a";
 /// 4.4.1-68b: average downwash factor on the aft surface (height and span over the vortex span).
 pub const AVERAGE_DOWNWASH: &str = "4.4.1-68b";
 
+/// 4.4.1-71: spanwise station of a canard's tip vortices at the aft surface, over the
+/// canard's exposed semispan (taper, A tan Λ_LE, β A).
+pub const CANARD_VORTEX_STATION: &str = "4.4.1-71";
+
 /// Every chart of its own the tail methods read.
-pub const ALL: &[&str] = &[LEADING_EDGE_SEPARATION, AVERAGE_DOWNWASH];
+pub const ALL: &[&str] = &[
+    LEADING_EDGE_SEPARATION,
+    AVERAGE_DOWNWASH,
+    CANARD_VORTEX_STATION,
+];
 
 /// The chart's value at `args`; leaving its data is a warning, a refusal an error.
 pub fn read(

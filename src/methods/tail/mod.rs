@@ -11,6 +11,9 @@
 //!   `surfaces`;
 //! - the tail in the presence of the body behind the wing, 4.3.1.2, 4.3.1.3 and 4.3.2 applied
 //!   to the tail, summed as in 4.5.1 (WBTAIL), module `tail_body`;
+//! - canard configurations (downwash method 3: the deck's wing is the canard, its horizontal
+//!   tail the main wing), 4.4.1's canard method (WGEOTL, WBTAIL's canard branch), module
+//!   `canard`;
 //! - the configuration totals (M10O12), here.
 //!
 //! The wing-body terms are `methods::wing_body`'s, the surfaces' the wing methods'
@@ -20,7 +23,7 @@
 //! Experimental wing-body data ($EXPRnn CDWB, CLWB, CMWB, CLAWB, CMAWB) enter through the
 //! wing-body's coefficients (`methods::wing_body`), as in the original.
 //!
-//! Not covered: canards (the original's DWASH 3 and WBTAIL's canard branch), experimental
+//! Not covered: experimental
 //! downwash and q/q∞ ($EXPRnn EPSLON, DEODA, QOQINF) and tail data, non-straight wings with a tail (the original then
 //! prints no configuration totals either), trim pages, Mach numbers above STMACH (transonic
 //! and supersonic downwash and tails), the body-horizontal tail and body-vertical tail pages.
@@ -33,6 +36,7 @@
 //!
 //! Where this differs from the original, see `docs/tail.md`.
 
+mod canard;
 mod downwash;
 pub mod figures;
 mod surfaces;
@@ -51,6 +55,7 @@ use crate::methods::body::subsonic_limit;
 use crate::methods::wing::{WingMethodError, WingType, WingWarning};
 use crate::methods::wing_body::{wing_body, WingBody, WingBodyError, WingBodyWarning};
 
+pub use canard::{canard_vortex, Canard, CanardInputs, CanardVortex, CanardVortexAtAngle};
 pub use downwash::{
     downwash_gradient_at_tail, downwash_method, effective_aspect_ratio_ratio,
     empirical_downwash_gradient, tail_placement, wing_wake, Downwash, DownwashMethod,
@@ -85,7 +90,7 @@ pub enum TailError {
     NotSubsonic { mach: f64, limit: f64 },
     #[error("the wing is not straight tapered: the original computes no downwash and no configuration totals for it")]
     NotStraightWing,
-    #[error("the horizontal tail is a canard (downwash method 3): not covered")]
+    #[error("the configuration is a canard (downwash method 3): no downwash table; its effect on the aft surface is in the configuration totals")]
     Canard,
     #[error("no wing maximum lift at low speed (give CLMAXL in $WGSCHR, or an airfoil section): the downwash needs its angle")]
     NoLowSpeedMaxLift,
@@ -193,6 +198,9 @@ pub struct ConfigurationTerms {
     pub wing_body: WingBody,
     pub horizontal_tail: Option<HorizontalTailAlone>,
     pub downwash: Option<Downwash>,
+    /// Canard configurations (downwash method 3): the canard's wake and vortices at the aft
+    /// surface, in place of the downwash.
+    pub canard: Option<Canard>,
     pub tail_body: Option<TailBody>,
     pub vertical_tail: Option<FinZeroLiftDrag>,
     pub ventral_fin: Option<FinZeroLiftDrag>,
@@ -312,7 +320,13 @@ pub fn downwash(
 ///   fins' zero-lift drag.
 ///
 /// CN and CA are resolved at the schedule angle. Original: M10O12, WBTAIL, VTDRAG. Errors: no
-/// wing, body or tail, a non-straight wing, a canard, and the downwash's and wing-body's.
+/// wing, body or tail, a non-straight wing, and the downwash's and wing-body's.
+///
+/// Canard configurations (downwash method 3, see [`downwash_method`]): the deck's wing is the
+/// canard and its horizontal tail the aft surface; the aft surface works in the canard's wake
+/// (q/q∞) without downwash (ε = 0, dε/dα = 0), and the lift the canard's vortices induce on it,
+/// ΔCLα α, joins CL, its moment CM, and ΔCLα the first CLA and CMA ([`Canard`], DATCOM 4.4.1's
+/// canard method).
 pub fn configuration(
     case: &Case,
     condition_index: usize,
@@ -369,13 +383,44 @@ pub fn configuration(
     // Horizontal tail.
     let (mut horizontal_tail, mut dw, mut tb, mut first_slopes, mut wbh, mut wbhv) =
         (None, None, None, None, None, None);
+    let mut canard_terms = None;
     if case.horizontal_tail.is_some() {
         let tail = horizontal_tail_alone(case, condition_index, alpha_deg)?;
-        let d = downwash::downwash_from(case, alpha_deg, condition_index, &wb, &tail)?;
         warnings.extend(tail.surface.warnings.iter().cloned().map(TailWarning::Wing));
-        warnings.extend(d.warnings.iter().cloned());
-        let (t, first, page) =
-            wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, &d, &mut warnings)?;
+        let method = downwash_method(
+            case.sections
+                .get("WING")
+                .and_then(|u| u.scalars.get("DWASH").copied()),
+            wb.terms.wing.terms.planform.semispan,
+            tail.surface.terms.planform.semispan,
+        );
+        let (t, first, page) = if method == DownwashMethod::Canard {
+            let mut c =
+                canard::canard(case, condition_index, alpha_deg, &wb, &tail, &mut warnings)?;
+            let zeros = vec![Some(0.0); alpha_deg.len()];
+            let q = c.dynamic_pressure_ratio.clone();
+            let flow = FlowAtTail {
+                dynamic_pressure_ratio: &q,
+                epsilon_deg: &zeros,
+                gradient: &zeros,
+                canard: Some(&mut c),
+            };
+            let out = wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, flow, &mut warnings)?;
+            canard_terms = Some(c);
+            out
+        } else {
+            let d = downwash::downwash_from(case, alpha_deg, condition_index, &wb, &tail)?;
+            warnings.extend(d.warnings.iter().cloned());
+            let flow = FlowAtTail {
+                dynamic_pressure_ratio: &d.dynamic_pressure_ratio,
+                epsilon_deg: &d.epsilon_deg,
+                gradient: &d.gradient,
+                canard: None,
+            };
+            let out = wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, flow, &mut warnings)?;
+            dw = Some(d);
+            out
+        };
         if has_fin {
             wbhv = Some(Coefficients::resolved(
                 alpha_deg,
@@ -387,7 +432,6 @@ pub fn configuration(
             ));
         }
         horizontal_tail = Some(tail);
-        dw = Some(d);
         tb = Some(t);
         first_slopes = first;
         wbh = Some(page);
@@ -403,6 +447,7 @@ pub fn configuration(
             wing_body: wb,
             horizontal_tail,
             downwash: dw,
+            canard: canard_terms,
             tail_body: tb,
             vertical_tail,
             ventral_fin,
@@ -413,13 +458,22 @@ pub fn configuration(
     })
 }
 
+/// The flow at the horizontal tail: q/q∞, ε (deg), dε/dα, and for a canard configuration its
+/// vortex terms (ε and dε/dα then 0; the canard's moments are filled in).
+struct FlowAtTail<'a> {
+    dynamic_pressure_ratio: &'a [Option<f64>],
+    epsilon_deg: &'a [Option<f64>],
+    gradient: &'a [Option<f64>],
+    canard: Option<&'a mut Canard>,
+}
+
 /// The wing-body-horizontal tail page and its terms.
 fn wing_body_horizontal_tail(
     case: &Case,
     alpha_deg: &[f64],
     wb: &WingBody,
     tail: &HorizontalTailAlone,
-    dw: &Downwash,
+    flow: FlowAtTail,
     warnings: &mut Vec<TailWarning>,
 ) -> Result<(TailBody, Option<FirstSlopes>, Coefficients), TailError> {
     let n = alpha_deg.len();
@@ -478,24 +532,49 @@ fn wing_body_horizontal_tail(
     let t = tail_body(
         &inputs,
         alpha_deg,
-        &dw.dynamic_pressure_ratio,
-        &dw.epsilon_deg,
-        &dw.gradient,
+        flow.dynamic_pressure_ratio,
+        flow.epsilon_deg,
+        flow.gradient,
         warnings,
     )?;
     let at = &t.at_angle;
+    // The canard's vortex lift on the aft surface and its moment (0 without a canard).
+    let canard_at: Vec<Option<CanardVortexAtAngle>> = match &flow.canard {
+        Some(c) => c.vortex.at_angle.clone(),
+        None => vec![None; n],
+    };
+    let is_canard = flow.canard.is_some();
+    let canard_lift = |k: usize| -> Option<f64> {
+        if is_canard {
+            Some(canard_at[k]?.lift)
+        } else {
+            Some(0.0)
+        }
+    };
+    let canard_moment: Vec<Option<f64>> = (0..n)
+        .map(|k| {
+            if is_canard {
+                Some(canard_at[k]?.moment(lever, height)).filter(|v| v.is_finite())
+            } else {
+                Some(0.0)
+            }
+        })
+        .collect();
     let cd: Vec<Option<f64>> = (0..n).map(|k| Some(wb.cd[k]? + at[k]?.drag)).collect();
     let cl: Vec<Option<f64>> = (0..n)
         .map(|k| {
             let a = at[k]?;
-            Some(wb.cl[k]? + a.lift + a.vortex_lift)
+            Some(wb.cl[k]? + a.lift + a.vortex_lift + canard_lift(k)?)
         })
         .collect();
     let cm: Vec<Option<f64>> = (0..n)
         .map(|k| {
             let a = at[k]?;
-            let v =
-                wb.cm[k]? + a.moment_of_normal_force + a.moment_of_axial_force + a.zero_lift_moment;
+            let v = wb.cm[k]?
+                + a.moment_of_normal_force
+                + a.moment_of_axial_force
+                + a.zero_lift_moment
+                + canard_moment[k]?;
             v.is_finite().then_some(v)
         })
         .collect();
@@ -507,9 +586,16 @@ fn wing_body_horizontal_tail(
 
     // The first angle: analytic slopes.
     let k_sum = t.interference.wing_in_presence_of_body + t.interference.body_in_presence_of_wing;
-    let dclda = k_sum * tail.slope_per_rad;
     let first = (|| {
         let a = at.first().copied()??;
+        // With a canard, its vortex lift slope (over q) joins the aft surface's.
+        let (canard_slope, canard_lift0) = if is_canard {
+            let c = canard_at.first().copied()??;
+            (c.lift_slope_per_rad, c.lift)
+        } else {
+            (0.0, 0.0)
+        };
+        let dclda = k_sum * tail.slope_per_rad + canard_slope / a.dynamic_pressure_ratio;
         let cla_wb = wb.cla_per_rad[0]?;
         let cla1 = cla_wb + dclda * (1.0 - a.gradient) * a.dynamic_pressure_ratio;
         let moment = (|| {
@@ -543,7 +629,7 @@ fn wing_body_horizontal_tail(
                 End::Hold,
                 End::Hold,
             )?;
-            let clht = (a.lift + a.vortex_lift) / a.dynamic_pressure_ratio;
+            let clht = (a.lift + a.vortex_lift + canard_lift0) / a.dynamic_pressure_ratio;
             let (sa, ca) = (alpha_deg[0] - a.epsilon_deg).to_radians().sin_cos();
             let e = a.dynamic_pressure_ratio * (1.0 - a.gradient);
             let tail_moment = lever * ((-clht + dcdda) * sa + (dclda + cdht) * ca) * e
@@ -560,6 +646,9 @@ fn wing_body_horizontal_tail(
     if n > 0 {
         cla[0] = first.map(|f| f.cla_per_rad);
         cma[0] = first.and_then(|f| f.cma_per_rad);
+    }
+    if let Some(c) = flow.canard {
+        c.moment = canard_moment;
     }
     let page = Coefficients::resolved(alpha_deg, cd, cl, cm, cla, cma);
     Ok((t, first, page))
