@@ -81,6 +81,8 @@ struct Tally {
     matched: [usize; 3],
     total: [usize; 3],
     misses: Vec<String>,
+    /// Per deck: (matched, total) per column.
+    decks: std::collections::BTreeMap<String, ([usize; 3], [usize; 3])>,
 }
 
 /// The sideslip columns of page `page` at condition `k` of a run of the case.
@@ -205,6 +207,7 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
         matched: [0; 3],
         total: [0; 3],
         misses: Vec::new(),
+        decks: Default::default(),
     };
     for (name, deck, text) in decks {
         let listings = common::case_listings(text);
@@ -232,7 +235,13 @@ fn run(decks: &[(String, Deck, String)], config: Config) -> Tally {
                     }
                     let at = format!("{name} case {} line {}", ci + 1, listed.row.line);
                     let result = ours(case, k, config, &mut our_run);
+                    let before = (t.matched, t.total);
                     compare(result, listed, &at, &mut t);
+                    let deck = t.decks.entry(name.clone()).or_default();
+                    for j in 0..3 {
+                        deck.0[j] += t.matched[j] - before.0[j];
+                        deck.1[j] += t.total[j] - before.1[j];
+                    }
                 }
             }
         }
@@ -274,6 +283,8 @@ fn lateral_derivatives_agree_with_the_original() {
     ] {
         // Matched and total numbers over every page.
         let mut all = ([0usize; 3], [0usize; 3]);
+        let mut per_deck: std::collections::BTreeMap<String, ([usize; 3], [usize; 3])> =
+            Default::default();
         let decks: Vec<(String, Deck, String)> = sources
             .iter()
             .map(|(n, d, l)| {
@@ -320,6 +331,13 @@ fn lateral_derivatives_agree_with_the_original() {
                 all.0[j] += t.matched[j];
                 all.1[j] += t.total[j];
             }
+            for (deck, (m, n)) in &t.decks {
+                let e = per_deck.entry(deck.clone()).or_insert(([0; 3], [0; 3]));
+                for j in 0..3 {
+                    e.0[j] += m[j];
+                    e.1[j] += n[j];
+                }
+            }
             eprintln!("{title}: {}", config.page());
             for (j, c) in COLUMNS.iter().enumerate() {
                 eprintln!("  {c}: {} / {}", t.matched[j], t.total[j]);
@@ -361,6 +379,13 @@ fn lateral_derivatives_agree_with_the_original() {
             for m in &t.misses {
                 eprintln!("  miss: {m}");
             }
+        }
+        eprintln!("{title}: per deck, every page (CYB, CNB, CLB)");
+        for (deck, (m, n)) in &per_deck {
+            eprintln!(
+                "  {deck:<50} {:>4}/{:<4} {:>4}/{:<4} {:>4}/{:<4}",
+                m[0], n[0], m[1], n[1], m[2], n[2]
+            );
         }
         eprintln!("{title}: ALL PAGES");
         for (j, c) in COLUMNS.iter().enumerate() {
