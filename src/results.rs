@@ -299,6 +299,55 @@ fn add_sideslip(
     }
 }
 
+/// The page of a low-aspect-ratio wing-body ($LARWB), as the original titles it.
+pub const LOW_ASPECT_RATIO: &str = "LOW ASPECT RATIO WINGS AND WING-BODY COMBINATIONS";
+
+/// The low-aspect-ratio wing-body coefficients at one condition (DATCOM 4.8 and 5.5), or the
+/// reason there are none.
+fn low_aspect_ratio_coefficients(
+    case: &Case,
+    condition: &FlightCondition,
+    alpha_deg: &[f64],
+) -> Result<(StaticCoefficients, Vec<String>), String> {
+    use crate::methods::low_aspect_ratio as lar;
+    let lb = case.larwb.as_ref().ok_or("the case has no $LARWB")?;
+    let flight = lar::LowAspectRatioFlight {
+        mach: condition.mach,
+        reynolds_per_length: condition.reynolds_per_length,
+        roughness: crate::methods::body::roughness_height(case),
+    };
+    let page = lar::low_aspect_ratio_wing_body(lb, flight, alpha_deg)
+        .map_err(|e| format!("low-aspect-ratio wing-body: {e}"))?;
+    let mut warnings: Vec<String> = page
+        .warnings
+        .iter()
+        .map(|w| format!("low-aspect-ratio wing-body: {w}"))
+        .collect();
+    let some = |v: &[f64]| {
+        v.iter()
+            .map(|x| Some(*x).filter(|y| y.is_finite()))
+            .collect()
+    };
+    let mut s = StaticCoefficients::empty(alpha_deg.len());
+    s.cd = some(&page.cd);
+    s.cl = some(&page.cl);
+    s.cm = some(&page.cm);
+    s.cn = some(&page.cn);
+    s.ca = some(&page.ca);
+    s.xcp = page.xcp.clone();
+    s.cla = page.cla.clone();
+    s.cma = page.cma.clone();
+    match &page.sideslip {
+        Ok(d) => {
+            s.cyb = some(&d.cyb);
+            s.cnb = some(&d.cnb);
+            s.clb = some(&d.clb);
+        }
+        Err(e) => warnings.push(format!("low-aspect-ratio wing-body sideslip: {e}")),
+    }
+    Ok((s, warnings))
+}
+
 /// The body-alone coefficients at one condition (DATCOM 4.2), or the reason there are none.
 fn body_alone_coefficients(
     case: &Case,
@@ -752,6 +801,9 @@ fn dynamic_derivatives(
 
 /// Configuration name as the original prints it, from the components present.
 pub fn configuration_name(case: &Case) -> String {
+    if case.larwb.is_some() {
+        return LOW_ASPECT_RATIO.to_string();
+    }
     let body = case.body.is_some();
     let wing = case.wing.is_some();
     let mut parts: Vec<&str> = Vec::new();
@@ -846,7 +898,8 @@ pub fn run_case(case: &Case) -> CaseResults {
         };
         // In the original's page order.
         let body = case.body.is_some();
-        let parts: [(&str, bool); 10] = [
+        let parts: [(&str, bool); 11] = [
+            (LOW_ASPECT_RATIO, case.larwb.is_some()),
             (BODY_ALONE, body),
             (WING_ALONE, case.wing.is_some()),
             (HORIZONTAL_TAIL, ht),
@@ -869,6 +922,7 @@ pub fn run_case(case: &Case) -> CaseResults {
                     continue;
                 }
                 let computed = match part {
+                    LOW_ASPECT_RATIO => low_aspect_ratio_coefficients(case, &c, &f.alpha_deg),
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
                     WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg, wing_section),
                     WING_BODY => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),

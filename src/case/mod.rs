@@ -209,14 +209,50 @@ pub struct Planform {
     pub swafp_deg: Option<f64>,
 }
 
-/// $LARWB: the low-aspect-ratio wing-body's reference quantities, SI. When present they
-/// replace SREF, CBARR (by L) and XCG, as in the original.
+/// $LARWB: the low-aspect-ratio wing-body (lifting body), SI, angles in degrees. SREF, L and
+/// XCG replace the reference area, length and moment centre, as in the original.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct LowAspectRatioWingBody {
     pub sref: Option<f64>,
     /// Body length L, the reference length.
     pub length: Option<f64>,
     pub xcg: Option<f64>,
+    /// ZB: height of the apex above the base's centre (sets the zero-lift angle).
+    pub zb: Option<f64>,
+    /// DELTEP: leading-edge angle of a sharp-edged planform, degrees (sharp leading edge when given).
+    pub deltep_deg: Option<f64>,
+    /// SFRONT: frontal (projected) area.
+    pub sfront: Option<f64>,
+    /// AR: aspect ratio of the planform.
+    pub aspect_ratio: Option<f64>,
+    /// R3LEOB: leading-edge radius over span, round leading edges.
+    pub r3leob: Option<f64>,
+    /// DELTAL: leading-edge sweep of a round-edged planform, degrees.
+    pub deltal_deg: Option<f64>,
+    /// SWET: wetted area.
+    pub swet: Option<f64>,
+    /// PERBAS: perimeter of the base.
+    pub perbas: Option<f64>,
+    /// SBASE: base area.
+    pub sbase: Option<f64>,
+    /// HB: height of the base.
+    pub hb: Option<f64>,
+    /// BB: span of the base.
+    pub bb: Option<f64>,
+    /// BLF: the base lies aft of non-lifting surfaces (body-like base).
+    pub blf: Option<bool>,
+    /// THETAD: semi-apex angle of the planform, degrees.
+    pub thetad_deg: Option<f64>,
+    /// ROUNDN: the nose is rounded (blunted).
+    pub roundn: Option<bool>,
+    /// SBS: body side area.
+    pub sbs: Option<f64>,
+    /// SBSLB: side area ahead of 0.2 of the length.
+    pub sbslb: Option<f64>,
+    /// XCENSB: centroid of the side area, from the apex.
+    pub xcensb: Option<f64>,
+    /// XCENW: centroid of the planform area, from the apex.
+    pub xcenw: Option<f64>,
 }
 
 /// $WGSCHR and its kin: section characteristics the user gives (fractions of chord).
@@ -673,6 +709,24 @@ impl Case {
                     sref: l.real("SREF"),
                     length: l.real("L"),
                     xcg: l.real("XCG"),
+                    zb: l.real("ZB"),
+                    deltep_deg: l.real("DELTEP"),
+                    sfront: l.real("SFRONT"),
+                    aspect_ratio: l.real("AR"),
+                    r3leob: l.real("R3LEOB"),
+                    deltal_deg: l.real("DELTAL"),
+                    swet: l.real("SWET"),
+                    perbas: l.real("PERBAS"),
+                    sbase: l.real("SBASE"),
+                    hb: l.real("HB"),
+                    bb: l.real("BB"),
+                    blf: l.logical("BLF"),
+                    thetad_deg: l.real("THETAD"),
+                    roundn: l.logical("ROUNDN"),
+                    sbs: l.real("SBS"),
+                    sbslb: l.real("SBSLB"),
+                    xcensb: l.real("XCENSB"),
+                    xcenw: l.real("XCENW"),
                 }
             }),
             conditions: Vec::new(),

@@ -5,6 +5,7 @@ pub mod body;
 pub mod dynamic;
 pub mod experimental;
 pub mod lateral;
+pub mod low_aspect_ratio;
 pub mod section;
 pub mod tail;
 pub mod wing;
