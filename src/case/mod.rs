@@ -947,7 +947,7 @@ impl Case {
     /// Namelists present in the case (typed and other), by name.
     pub fn namelist_names(&self) -> Vec<String> {
         let mut v = Vec::new();
-        let typed: [(&str, bool); 8] = [
+        let typed: [(&str, bool); 9] = [
             ("FLTCON", self.flight.is_some()),
             ("SYNTHS", self.synthesis.is_some()),
             ("BODY", self.body.is_some()),
@@ -955,6 +955,7 @@ impl Case {
             ("HTPLNF", self.horizontal_tail.is_some()),
             ("VTPLNF", self.vertical_tail.is_some()),
             ("VFPLNF", self.ventral_fin.is_some()),
+            ("TVTPAN", self.twin_panels.is_some()),
             ("OPTINS", self.reference != Reference::default()),
         ];
         for (n, present) in typed {
