@@ -406,6 +406,37 @@ pub const WING_BODY_HT: &str = "WING-BODY-HORIZONTAL TAIL CONFIGURATION";
 pub const WING_BODY_VT: &str = "WING-BODY-VERTICAL TAIL CONFIGURATION";
 pub const WING_BODY_VT_HT: &str = "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION";
 
+/// The vertical tail's sideslip derivatives (DATCOM 5.3.1.1), with the twin vertical panels'
+/// ($TVTPAN, figures 5.3.1.1-24a to -24c) added as the original adds them, up to STMACH; above
+/// it the panels are left out and a warning says so, as the original notes.
+fn vertical_tail_sideslip(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    warnings: &mut Vec<String>,
+) -> Result<crate::methods::lateral::Lateral, crate::methods::lateral::LateralError> {
+    use crate::methods::lateral::{self, fin_lateral, Fin};
+    let fin = fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail)?;
+    if case.twin_panels.is_none() {
+        return Ok(fin);
+    }
+    let mach = case.conditions.get(condition_index).map(|c| c.mach);
+    if mach.is_some_and(|m| m > crate::methods::body::subsonic_limit(case)) {
+        warnings.push(format!(
+            "Mach {:.3}: the lateral stability derivatives do not include the effects of the twin \
+             vertical panels (no DATCOM method above STMACH)",
+            mach.unwrap_or_default()
+        ));
+        return Ok(fin);
+    }
+    let twin = lateral::twin_panel_lateral(case, alpha_deg)?;
+    let mut total = lateral::sum(&[&fin, &twin]);
+    total.fin_terms = fin.fin_terms;
+    total.twin_panel_terms = twin.twin_panel_terms;
+    total.warnings = fin.warnings.into_iter().chain(twin.warnings).collect();
+    Ok(total)
+}
+
 fn coefficients(c: &crate::methods::tail::Coefficients) -> StaticCoefficients {
     let mut s = StaticCoefficients::empty(c.cd.len());
     set_longitudinal!(s, c.clone());
@@ -455,11 +486,11 @@ fn tail_configuration_coefficients(
     }
     if with_fins {
         if case.vertical_tail.is_some() {
-            parts.push(lateral::fin_lateral(
+            parts.push(vertical_tail_sideslip(
                 case,
                 condition_index,
                 alpha,
-                Fin::VerticalTail,
+                &mut warnings,
             ));
         }
         if case.ventral_fin.is_some() {
@@ -565,7 +596,6 @@ fn vertical_tail_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    use crate::methods::lateral::{fin_lateral, Fin};
     let mut tail_warnings = Vec::new();
     let drag = crate::methods::tail::fin_zero_lift_drag(
         case,
@@ -586,8 +616,8 @@ fn vertical_tail_coefficients(
             column[0] = Some(0.0);
         }
     }
-    let lateral =
-        fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail).map_err(|e| e.to_string());
+    let lateral = vertical_tail_sideslip(case, condition_index, alpha_deg, &mut warnings)
+        .map_err(|e| e.to_string());
     add_sideslip(&mut s, &mut warnings, "vertical tail alone", lateral);
     Ok((s, warnings))
 }
@@ -601,7 +631,7 @@ fn body_vertical_tail_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    use crate::methods::lateral::{self, fin_lateral, Fin};
+    use crate::methods::lateral;
     let (body, mut warnings) = body_alone_coefficients(case, condition, alpha_deg)?;
     let mut tail_warnings = Vec::new();
     let drag = crate::methods::tail::fin_zero_lift_drag(
@@ -634,9 +664,10 @@ fn body_vertical_tail_coefficients(
         wing_terms: None,
         wing_body_terms: None,
         fin_terms: None,
+        twin_panel_terms: None,
         warnings: Vec::new(),
     };
-    let total = fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail)
+    let total = vertical_tail_sideslip(case, condition_index, alpha_deg, &mut warnings)
         .map(|fin| lateral::sum_with_warnings(vec![body_sideslip, fin]))
         .map_err(|e| e.to_string());
     add_sideslip(&mut s, &mut warnings, "body-vertical tail", total);
@@ -799,6 +830,23 @@ fn dynamic_derivatives(
     }
 }
 
+/// The original's name of build-up page `part` (one of the constants above) for `case`: with
+/// twin vertical panels ($TVTPAN) the pages with the vertical tail are named with them.
+pub fn page_name(case: &Case, part: &str) -> String {
+    if case.twin_panels.is_none() {
+        return part.to_string();
+    }
+    match part {
+        VERTICAL_TAIL => "VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string(),
+        BODY_VT => "BODY-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string(),
+        WING_BODY_VT => "WING-BODY-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string(),
+        WING_BODY_VT_HT => {
+            "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string()
+        }
+        other => other.to_string(),
+    }
+}
+
 /// Configuration name as the original prints it, from the components present.
 pub fn configuration_name(case: &Case) -> String {
     if case.larwb.is_some() {
@@ -816,14 +864,21 @@ pub fn configuration_name(case: &Case) -> String {
     let ht = case.horizontal_tail.is_some();
     let vt = case.vertical_tail.is_some();
     let vf = case.ventral_fin.is_some();
-    if vf {
+    let twin = case.twin_panels.is_some();
+    if vf || twin {
+        // With a ventral fin or twin panels the original names the horizontal tail first.
         if ht {
             parts.push("HORIZONTAL TAIL");
         }
         if vt {
             parts.push("VERTICAL TAIL");
         }
-        parts.push("VENTRAL FIN");
+        if vf {
+            parts.push("VENTRAL FIN");
+        }
+        if twin {
+            parts.push("TWIN VERTICAL PANEL");
+        }
     } else {
         if vt {
             parts.push("VERTICAL TAIL");
@@ -836,6 +891,7 @@ pub fn configuration_name(case: &Case) -> String {
         [] => "NO COMPONENT".to_string(),
         // The original's name for the body alone.
         ["BODY"] => BODY_ALONE.to_string(),
+        ["TWIN VERTICAL PANEL"] => "TWIN VERTICAL PANEL CONFIGURATION".to_string(),
         [one] => format!("{one} ALONE CONFIGURATION"),
         _ => format!("{} CONFIGURATION", parts.join("-")),
     }
@@ -917,7 +973,8 @@ pub fn run_case(case: &Case) -> CaseResults {
             let mut totals: Option<Result<crate::methods::tail::ConfigurationTotals, String>> =
                 None;
             for (part, present) in parts {
-                let own = configuration == part;
+                let name = page_name(case, part);
+                let own = configuration == name;
                 if !present || !(own || case.cards.build) {
                     continue;
                 }
@@ -940,7 +997,7 @@ pub fn run_case(case: &Case) -> CaseResults {
                 };
                 let mut entry = ConditionResults {
                     condition: c.clone(),
-                    configuration: part.to_string(),
+                    configuration: name,
                     alpha_deg: f.alpha_deg.clone(),
                     static_coefficients: StaticCoefficients::empty(n),
                     // With DAMP the original prints a dynamic page after each configuration's

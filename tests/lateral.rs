@@ -50,6 +50,18 @@ const FLOORS_BODY_HT: [usize; 3] = [3, 4, 13];
 /// original prints as −3.25E-12 (its single-precision CL there) where ours is 0.
 const FLOORS_BODY_HT_ON_WING_ROOT: [usize; 3] = [4, 4, 37];
 const FLOORS_BODY_VT: [usize; 3] = [3, 3, 31];
+/// The pages with twin vertical panels ($TVTPAN; ex3 case 3 and its copies).
+const FLOORS_VT_TWIN: [usize; 3] = [1, 1, 9];
+const FLOORS_BODY_VT_TWIN: [usize; 3] = [1, 1, 9];
+const FLOORS_WING_BODY_VT_TWIN: [usize; 3] = [1, 1, 9];
+const FLOORS_WING_BODY_HT_VT_TWIN: [usize; 3] = [8, 8, 83];
+
+/// The original's names of the pages with twin vertical panels.
+const VT_TWIN: &str = "VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION";
+const BODY_VT_TWIN: &str = "BODY-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION";
+const WING_BODY_VT_TWIN: &str = "WING-BODY-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION";
+const WING_BODY_HT_VT_TWIN: &str =
+    "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION";
 
 #[derive(Clone, Copy, PartialEq)]
 enum Config {
@@ -102,6 +114,7 @@ fn from_run(results: &CaseResults, k: usize, page: &str) -> Result<Lateral, Stri
         wing_terms: None,
         wing_body_terms: None,
         fin_terms: None,
+        twin_panel_terms: None,
         warnings: Vec::new(),
     })
 }
@@ -265,6 +278,10 @@ fn lateral_derivatives_agree_with_the_original() {
             "VERTICAL TAIL CONFIGURATION",
             "BODY-HORIZONTAL TAIL CONFIGURATION",
             "BODY-VERTICAL TAIL CONFIGURATION",
+            VT_TWIN,
+            BODY_VT_TWIN,
+            WING_BODY_VT_TWIN,
+            WING_BODY_HT_VT_TWIN,
         ],
     ) else {
         return;
@@ -324,6 +341,13 @@ fn lateral_derivatives_agree_with_the_original() {
             (
                 Config::Tails("BODY-VERTICAL TAIL CONFIGURATION"),
                 FLOORS_BODY_VT,
+            ),
+            (Config::Tails(VT_TWIN), FLOORS_VT_TWIN),
+            (Config::Tails(BODY_VT_TWIN), FLOORS_BODY_VT_TWIN),
+            (Config::Tails(WING_BODY_VT_TWIN), FLOORS_WING_BODY_VT_TWIN),
+            (
+                Config::Tails(WING_BODY_HT_VT_TWIN),
+                FLOORS_WING_BODY_HT_VT_TWIN,
             ),
         ] {
             let t = run(&decks, config);
@@ -582,6 +606,24 @@ const SPOTS: common::Spots = &[
     ("5.3.1.1-22d", &[4.5], 1.0),
     ("5.3.1.1-22d", &[5.0], 1.0),
     ("5.3.1.1-22d", &[6.0], 1.0),
+    // 5.3.1.1-24a: datcom.f DATA X5324A, Y5324A (lines 28789-28791): Y(1, 3, 6, 8, 11) of 11
+    ("5.3.1.1-24a", &[0.0], 1.5),
+    ("5.3.1.1-24a", &[0.2], 1.197),
+    ("5.3.1.1-24a", &[0.5], 1.0),
+    ("5.3.1.1-24a", &[0.7], 1.098),
+    ("5.3.1.1-24a", &[1.0], 1.5),
+    // 5.3.1.1-24b: datcom.f DATA X124B, X224B, Y24B (lines 28795-28798): Y(1, 6, 10, 11, 20) of 20
+    ("5.3.1.1-24b", &[20.0, 0.5], 0.9),
+    ("5.3.1.1-24b", &[20.0, 3.0], 3.22),
+    ("5.3.1.1-24b", &[20.0, 5.0], 3.86),
+    ("5.3.1.1-24b", &[0.0, 0.5], 1.0),
+    ("5.3.1.1-24b", &[0.0, 5.0], 4.11),
+    // 5.3.1.1-24c: datcom.f DATA X124C, X224C, Y24C (lines 28802-28809): Y(1, 11, 18, 35, 55) of 55
+    ("5.3.1.1-24c", &[0.2, 0.0], 1.0),
+    ("5.3.1.1-24c", &[0.2, 1.0], 0.51),
+    ("5.3.1.1-24c", &[0.4, 0.6], 0.73),
+    ("5.3.1.1-24c", &[0.6, 1.0], 0.8),
+    ("5.3.1.1-24c", &[1.0, 1.0], 0.931),
 ];
 
 #[test]

@@ -209,6 +209,27 @@ pub struct Planform {
     pub swafp_deg: Option<f64>,
 }
 
+/// $TVTPAN: twin vertical panels, SI (lengths and SV scaled by SYNTHS SCALE, as the original).
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct TwinPanels {
+    /// BVP: panel span above the lifting surface.
+    pub bvp: Option<f64>,
+    /// BV: panel span.
+    pub bv: Option<f64>,
+    /// BDV: body depth at the panels.
+    pub bdv: Option<f64>,
+    /// BH: distance between the panels.
+    pub bh: Option<f64>,
+    /// SV: area of one panel.
+    pub sv: Option<f64>,
+    /// VPHITE: the curve parameter of figure 5.3.1.1-24b, as given.
+    pub vphite: Option<f64>,
+    /// VLP: distance from the centre of gravity aft to the panels' centre of pressure.
+    pub vlp: Option<f64>,
+    /// ZP: height of the panels' centre of pressure above the centre of gravity.
+    pub zp: Option<f64>,
+}
+
 /// $LARWB: the low-aspect-ratio wing-body (lifting body), SI, angles in degrees. SREF, L and
 /// XCG replace the reference area, length and moment centre, as in the original.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
@@ -322,6 +343,9 @@ pub struct Case {
     pub horizontal_tail: Option<Planform>,
     pub vertical_tail: Option<Planform>,
     pub ventral_fin: Option<Planform>,
+    /// $TVTPAN.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub twin_panels: Option<TwinPanels>,
     pub sections: BTreeMap<String, SectionInput>,
     pub larwb: Option<LowAspectRatioWingBody>,
     /// Flight conditions of the case (computed from `flight` when the case is typed).
@@ -403,7 +427,7 @@ const PLANFORMS: [(&str, &str); 4] = [
 /// Namelists that have a typed home in [`Case`].
 const TYPED: &[&str] = &[
     "FLTCON", "OPTINS", "SYNTHS", "BODY", "WGPLNF", "HTPLNF", "VTPLNF", "VFPLNF", "WGSCHR",
-    "HTSCHR", "VTSCHR", "VFSCHR",
+    "HTSCHR", "VTSCHR", "VFSCHR", "TVTPAN",
 ];
 
 fn flight(n: &Nl) -> FlightInput {
@@ -702,6 +726,19 @@ impl Case {
             horizontal_tail: planforms[1].take(),
             vertical_tail: planforms[2].take(),
             ventral_fin: planforms[3].take(),
+            twin_panels: has("TVTPAN").then(|| {
+                let t = nl("TVTPAN");
+                TwinPanels {
+                    bvp: t.real("BVP"),
+                    bv: t.real("BV"),
+                    bdv: t.real("BDV"),
+                    bh: t.real("BH"),
+                    sv: t.real("SV"),
+                    vphite: t.real("VPHITE"),
+                    vlp: t.real("VLP"),
+                    zp: t.real("ZP"),
+                }
+            }),
             sections,
             larwb: has("LARWB").then(|| {
                 let l = nl("LARWB");
@@ -964,7 +1001,7 @@ impl Case {
     /// Namelists present in the case (typed and other), by name.
     pub fn namelist_names(&self) -> Vec<String> {
         let mut v = Vec::new();
-        let typed: [(&str, bool); 8] = [
+        let typed: [(&str, bool); 9] = [
             ("FLTCON", self.flight.is_some()),
             ("SYNTHS", self.synthesis.is_some()),
             ("BODY", self.body.is_some()),
@@ -972,6 +1009,7 @@ impl Case {
             ("HTPLNF", self.horizontal_tail.is_some()),
             ("VTPLNF", self.vertical_tail.is_some()),
             ("VFPLNF", self.ventral_fin.is_some()),
+            ("TVTPAN", self.twin_panels.is_some()),
             ("OPTINS", self.reference != Reference::default()),
         ];
         for (n, present) in typed {

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::{DiscrepancyError, Prediction};
 use crate::case::Deck;
-use crate::results::{run_case, ConditionResults, WING_BODY, WING_BODY_VT};
+use crate::results::{page_name, run_case, ConditionResults, WING_BODY, WING_BODY_VT};
 
 /// What the flight simulation takes from the deck, SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -90,9 +90,9 @@ pub fn from_deck(
     // The horizontal tail's contribution: with it less without it.
     let without = if full.configuration.contains("HORIZONTAL TAIL") {
         let name = if full.configuration.contains("VERTICAL TAIL") {
-            WING_BODY_VT
+            page_name(&built, WING_BODY_VT)
         } else {
-            WING_BODY
+            WING_BODY.to_string()
         };
         group.iter().find(|e| e.configuration == name)
     } else {

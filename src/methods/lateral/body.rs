@@ -43,6 +43,7 @@ pub fn body_lateral(body: &BodyAlone, case: &Case) -> Lateral {
         wing_terms: None,
         wing_body_terms: None,
         fin_terms: None,
+        twin_panel_terms: None,
         warnings,
     }
 }

@@ -38,6 +38,13 @@ pub const FIN_TAIL_SIZE: &str = "5.3.1.1-22c";
 /// 5.3.1.1-22d: k of the panel's side force (b_v/2r₁).
 pub const FIN_SIDE_FORCE_K: &str = "5.3.1.1-22d";
 
+/// 5.3.1.1-24a: A_eff/A of a twin panel's position (BVP/BV).
+pub const TWIN_PANEL_POSITION: &str = "5.3.1.1-24a";
+/// 5.3.1.1-24b: a twin panel's lift-curve slope, per rad (VPHITE, A_eff).
+pub const TWIN_PANEL_LIFT_SLOPE: &str = "5.3.1.1-24b";
+/// 5.3.1.1-24c: the twin panels' side-force factor (BH/l_B, BDV/BV).
+pub const TWIN_PANEL_BODY: &str = "5.3.1.1-24c";
+
 /// Every chart the lateral methods read.
 pub const ALL: &[&str] = &[
     SWEEP_ROLL_PER_LIFT,
@@ -55,6 +62,9 @@ pub const ALL: &[&str] = &[
     FIN_ASPECT_WITH_TAIL,
     FIN_TAIL_SIZE,
     FIN_SIDE_FORCE_K,
+    TWIN_PANEL_POSITION,
+    TWIN_PANEL_LIFT_SLOPE,
+    TWIN_PANEL_BODY,
 ];
 
 /// The chart's value at `args`; leaving its data is a warning.

@@ -19,7 +19,10 @@
 //!   the sidewash factor and k, with the arms of the panel's MAC; module `vertical_tail`;
 //! - configurations: the sum of their components (`sum`), CYβ and Cnβ on the first row.
 //!
-//! Not covered: twin vertical panels ($TVTPAN, figures 5.3.1.1-24a to -24c), the body-horizontal
+//! - twin vertical panels ($TVTPAN), DATCOM 5.3.1.1 figures 5.3.1.1-24a to -24c (SUBLAT): added
+//!   to the vertical tail's terms on every page with it, below Mach 1; module `twin_panels`;
+//!
+//! Not covered: the body-horizontal
 //! tail terms (the original's BH page), Mach numbers above STMACH, low-aspect-ratio wing-body
 //! pages ($LARWB).
 //!
@@ -32,6 +35,7 @@
 
 mod body;
 pub mod figures;
+mod twin_panels;
 mod vertical_tail;
 mod wing;
 mod wing_body;
@@ -46,6 +50,7 @@ use crate::methods::wing::WingMethodError;
 use crate::results::planform_area_and_mac;
 
 pub use body::body_lateral;
+pub use twin_panels::{twin_panel_lateral, TwinPanelLateralTerms};
 pub use vertical_tail::{fin_lateral, Fin, FinLateralTerms};
 pub use wing::{wing_lateral, DihedralRoll, RollingMomentTerms, WingLateralTerms};
 pub use wing_body::{
@@ -133,6 +138,8 @@ pub struct Lateral {
     pub wing_body_terms: Option<WingBodyLateralTerms>,
     /// The vertical tail's or ventral fin's named terms.
     pub fin_terms: Option<FinLateralTerms>,
+    /// The twin vertical panels' named terms.
+    pub twin_panel_terms: Option<TwinPanelLateralTerms>,
     pub warnings: Vec<LateralWarning>,
 }
 
@@ -188,6 +195,7 @@ pub fn sum(parts: &[&Lateral]) -> Lateral {
         wing_terms: None,
         wing_body_terms: None,
         fin_terms: None,
+        twin_panel_terms: None,
         warnings: Vec::new(),
     }
 }

@@ -362,6 +362,7 @@ pub fn fin_lateral(
             arm_z,
             twin_factor,
         }),
+        twin_panel_terms: None,
         warnings,
     })
 }

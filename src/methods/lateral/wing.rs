@@ -399,6 +399,7 @@ pub fn wing_lateral(
         clb,
         wing_body_terms: None,
         fin_terms: None,
+        twin_panel_terms: None,
         wing_terms: Some(WingLateralTerms {
             aspect_ratio,
             taper,

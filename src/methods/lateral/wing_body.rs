@@ -366,6 +366,7 @@ pub fn wing_body_lateral_at_root(
         wing_terms: None,
         wing_body_terms: Some(terms),
         fin_terms: None,
+        twin_panel_terms: None,
         warnings,
     })
 }
