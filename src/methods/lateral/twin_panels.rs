@@ -9,7 +9,7 @@
 use serde::Serialize;
 
 use super::figures::{self, read};
-use super::{finite, Lateral, LateralError};
+use super::{Lateral, LateralError};
 use crate::case::Case;
 
 /// The terms of the twin panels' derivatives (lengths in metres).
@@ -110,20 +110,8 @@ pub fn twin_panel_lateral(case: &Case, alpha_deg: &[f64]) -> Result<Lateral, Lat
     let area = 2.0 * sv;
     let cyb = -body_factor * lift_curve_slope_per_rad * area / s_ref;
 
-    let n = alpha_deg.len();
-    let mut cyb_rows = vec![None; n];
-    let mut cnb_rows = vec![None; n];
-    if n > 0 {
-        cyb_rows[0] = finite(cyb);
-        cnb_rows[0] = finite(-cyb * arm_x / b_ref);
-    }
-    let clb = alpha_deg
-        .iter()
-        .map(|a| {
-            let (sin, cos) = a.to_radians().sin_cos();
-            finite(cyb * (arm_z * cos - arm_x * sin) / b_ref)
-        })
-        .collect();
+    let (cyb_rows, cnb_rows, clb) =
+        super::vertical_tail::side_force_rows(alpha_deg, cyb, arm_x, arm_z, b_ref);
     Ok(Lateral {
         alpha_deg: alpha_deg.to_vec(),
         cyb: cyb_rows,

@@ -324,20 +324,7 @@ pub fn fin_lateral(
     let twin = twin_factor.unwrap_or(1.0);
 
     let cyb = -k * lift_curve_slope_per_rad * sidewash * g.theoretical.area / s_ref * twin;
-    let n = alpha_deg.len();
-    let mut cyb_rows = vec![None; n];
-    let mut cnb_rows = vec![None; n];
-    if n > 0 {
-        cyb_rows[0] = finite(cyb);
-        cnb_rows[0] = finite(-cyb * arm_x / b_ref);
-    }
-    let clb = alpha_deg
-        .iter()
-        .map(|a| {
-            let (sin, cos) = a.to_radians().sin_cos();
-            finite(cyb * (arm_z * cos - arm_x * sin) / b_ref)
-        })
-        .collect();
+    let (cyb_rows, cnb_rows, clb) = side_force_rows(alpha_deg, cyb, arm_x, arm_z, b_ref);
     Ok(Lateral {
         alpha_deg: alpha_deg.to_vec(),
         cyb: cyb_rows,
@@ -365,4 +352,34 @@ pub fn fin_lateral(
         twin_panel_terms: None,
         warnings,
     })
+}
+
+/// CYβ, Cnβ and Clβ against angle of attack.
+pub(super) type SideForceRows = (Vec<Option<f64>>, Vec<Option<f64>>, Vec<Option<f64>>);
+
+/// The sideslip columns of a side force CYβ acting at `arm_x` aft of and `arm_z` above the
+/// moment reference (DATCOM 5.3.1.1): CYβ and Cnβ = −CYβ·l/b on the first row (the original
+/// gives them once), Clβ = CYβ (z cos α − l sin α)/b at every angle.
+pub(super) fn side_force_rows(
+    alpha_deg: &[f64],
+    cyb: f64,
+    arm_x: f64,
+    arm_z: f64,
+    b_ref: f64,
+) -> SideForceRows {
+    let n = alpha_deg.len();
+    let mut cyb_rows = vec![None; n];
+    let mut cnb_rows = vec![None; n];
+    if n > 0 {
+        cyb_rows[0] = finite(cyb);
+        cnb_rows[0] = finite(-cyb * arm_x / b_ref);
+    }
+    let clb = alpha_deg
+        .iter()
+        .map(|a| {
+            let (sin, cos) = a.to_radians().sin_cos();
+            finite(cyb * (arm_z * cos - arm_x * sin) / b_ref)
+        })
+        .collect();
+    (cyb_rows, cnb_rows, clb)
 }
