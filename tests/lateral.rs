@@ -754,3 +754,71 @@ fn wing_body_sideslip_worked_by_hand() {
         assert_eq!(body.clb[k], Some(0.0));
     }
 }
+
+/// Twin vertical panels (DATCOM 5.3.1.1, figures 5.3.1.1-24a to -24c, as the original's
+/// SUBLAT), worked by hand on a made-up deck whose inputs fall on chart nodes:
+///
+/// - BVP/BV = 1/2 = 0.5: figure 24a (DATA Y5324A) gives A_eff/A = 1.0;
+/// - A = BV²/SV = 2²/2 = 2.0, so A_eff = 2.0;
+/// - figure 24b at VPHITE 0, A_eff 2.0 (DATA Y24B, second curve): CLα_p = 2.75 per rad;
+/// - BH/l_B = 6/10 = 0.6 and BDV/BV = 1/2 = 0.5: figure 24c (DATA Y24C, third row) K = 0.844;
+/// - CYβ = −K·CLα_p·2·SV/S = −0.844 × 2.75 × 4/10 = −0.9284 per rad;
+/// - Cnβ = −CYβ·VLP/b = 0.9284 × 5/10 = 0.4642;
+/// - Clβ(α) = CYβ (ZP cos α − VLP sin α)/b: at 0°, −0.9284 × 1/10 = −0.09284; at 10°,
+///   −0.9284 × (0.984808 − 5 × 0.173648)/10 = −0.9284 × 0.0116568 = −0.010822.
+///
+/// Lengths are in feet in the deck; every term is a ratio, so the SI conversion cancels.
+#[test]
+fn twin_vertical_panels_worked_by_hand() {
+    const HAND: f64 = 1e-6;
+    let text = " $FLTCON NMACH=1.0, MACH(1)=0.3, NALT=1.0, ALT(1)=0.0,
+   NALPHA=2.0, ALSCHD(1)=0.0,10.0$
+ $OPTINS SREF=10.0, CBARR=1.0, BLREF=10.0$
+ $SYNTHS XCG=5.0, ZCG=0.0$
+ $BODY NX=3.0, X(1)=0.0,5.0,10.0, R(1)=0.0,0.5,0.5$
+ $TVTPAN BVP=1.0, BV=2.0, BDV=1.0, BH=6.0, SV=2.0, VPHITE=0.0, VLP=5.0, ZP=1.0$
+";
+    let deck = datcom::read_deck(text, "twin.dcm");
+    assert!(
+        !datcom::Diagnosed::has_errors(&deck),
+        "{:?}",
+        deck.diagnostics
+    );
+    let l = datcom::methods::lateral::twin_panel_lateral(&deck.cases[0], &[0.0, 10.0]).unwrap();
+    let t = l.twin_panel_terms.as_ref().unwrap();
+    assert!((t.position_factor - 1.0).abs() < HAND);
+    assert!((t.effective_aspect_ratio - 2.0).abs() < HAND);
+    assert!((t.lift_curve_slope_per_rad - 2.75).abs() < HAND);
+    assert!((t.body_factor - 0.844).abs() < HAND);
+    assert!((l.cyb[0].unwrap() + 0.9284).abs() < HAND);
+    assert!((l.cnb[0].unwrap() - 0.4642).abs() < HAND);
+    assert!((l.clb[0].unwrap() + 0.09284).abs() < HAND);
+    assert!((l.clb[1].unwrap() + 0.010_822).abs() < 2e-6);
+}
+
+/// The body alone's sideslip derivatives as the original forms them (DATCOM 5.2.1.1 applied
+/// through the body page): CYβ = −CLα of the body and Cnβ = −CMα·c̄/b at every angle, Clβ = 0.
+/// Worked on the example UAV's body page at Mach 0.06: both read off the same run.
+#[test]
+fn body_sideslip_is_the_body_pages_slopes() {
+    let path = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
+    let deck = datcom::read_deck_file(std::path::Path::new(&path)).unwrap();
+    let case = &deck.cases[0];
+    let alpha = &case.flight.as_ref().unwrap().alpha_deg;
+    let g = body(case.body.as_ref().unwrap()).unwrap();
+    let b = body_alone(case, &g, &case.conditions[0], alpha).unwrap();
+    let l = datcom::methods::lateral::body_lateral(&b, case);
+    let (c_bar, span) = (case.reference.chord.unwrap(), case.reference.span.unwrap());
+    for k in 0..alpha.len() {
+        let (cla, cma) = (b.cla_per_rad[k].unwrap(), b.cma_per_rad[k].unwrap());
+        assert!((l.cyb[k].unwrap() + cla).abs() < 1e-12, "row {k}");
+        assert_eq!(l.clb[k], Some(0.0));
+        // Cnβ = −CMα·c̄/b.
+        let expected = -cma * c_bar / span;
+        assert!(
+            (l.cnb[k].unwrap() - expected).abs() < 1e-9,
+            "row {k}: {:?} vs {expected}",
+            l.cnb[k]
+        );
+    }
+}
