@@ -588,6 +588,26 @@ fn horizontal_tail_coefficients(
     Ok((s, warnings))
 }
 
+/// The vertical tail's zero-lift drag (DATCOM 4.1.5.1) on the case's reference area, its
+/// warnings labelled; none (with a warning) when its section gives no thickness.
+fn vertical_tail_drag(
+    case: &Case,
+    condition_index: usize,
+    label: &str,
+    warnings: &mut Vec<String>,
+) -> Result<Option<f64>, String> {
+    let mut tail_warnings = Vec::new();
+    let drag = crate::methods::tail::fin_zero_lift_drag(
+        case,
+        condition_index,
+        crate::deck::cards::Surface::VerticalTail,
+        &mut tail_warnings,
+    )
+    .map_err(|e| format!("{label}: {e}"))?;
+    warnings.extend(tail_warnings.iter().map(|w| format!("{label}: {w}")));
+    Ok(drag.map(|d| d.drag.total))
+}
+
 /// The vertical tail alone at one condition: its zero-lift drag (DATCOM 4.1.5.1) on the first
 /// row, no lift, moment or slopes (0 on the first row, as the original prints them), and its
 /// sideslip derivatives (DATCOM 5.3.1.1, with the sidewash of its configuration).
@@ -596,22 +616,12 @@ fn vertical_tail_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    let mut tail_warnings = Vec::new();
-    let drag = crate::methods::tail::fin_zero_lift_drag(
-        case,
-        condition_index,
-        crate::deck::cards::Surface::VerticalTail,
-        &mut tail_warnings,
-    )
-    .map_err(|e| format!("vertical tail alone: {e}"))?;
-    let mut warnings: Vec<String> = tail_warnings
-        .iter()
-        .map(|w| format!("vertical tail alone: {w}"))
-        .collect();
+    let mut warnings = Vec::new();
+    let drag = vertical_tail_drag(case, condition_index, "vertical tail alone", &mut warnings)?;
     let n = alpha_deg.len();
     let mut s = StaticCoefficients::empty(n);
     if n > 0 {
-        s.cd[0] = drag.map(|d| d.drag.total);
+        s.cd[0] = drag;
         for column in [&mut s.cl, &mut s.cm, &mut s.cn, &mut s.cla, &mut s.cma] {
             column[0] = Some(0.0);
         }
@@ -633,20 +643,7 @@ fn body_vertical_tail_coefficients(
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
     use crate::methods::lateral;
     let (body, mut warnings) = body_alone_coefficients(case, condition, alpha_deg)?;
-    let mut tail_warnings = Vec::new();
-    let drag = crate::methods::tail::fin_zero_lift_drag(
-        case,
-        condition_index,
-        crate::deck::cards::Surface::VerticalTail,
-        &mut tail_warnings,
-    )
-    .map_err(|e| format!("body-vertical tail: {e}"))?
-    .map(|d| d.drag.total);
-    warnings.extend(
-        tail_warnings
-            .iter()
-            .map(|w| format!("body-vertical tail: {w}")),
-    );
+    let drag = vertical_tail_drag(case, condition_index, "body-vertical tail", &mut warnings)?;
     let cd: Vec<Option<f64>> = body.cd.iter().map(|c| Some((*c)? + drag?)).collect();
     let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
         alpha_deg,
