@@ -172,6 +172,34 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     d
 }
 
+/// `datcom-rs discrepancy` on the example deck with `measured` and `extra` arguments, JSON and
+/// plots written into `dir`: exit 0 asserted, the JSON returned.
+fn discrepancy_json(
+    dir: &std::path::Path,
+    measured: &std::path::Path,
+    extra: &[&std::ffi::OsStr],
+) -> serde_json::Value {
+    let json = dir.join("out.json");
+    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
+    let out = bin()
+        .args(["discrepancy", "--model", &deck, "--measured"])
+        .arg(measured)
+        .args(extra)
+        .arg("--json")
+        .arg(&json)
+        .arg("--plots")
+        .arg(dir.join("plots"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap()
+}
+
 /// The command line in flight mode: a synthetic flight with hidden drag written as CSV, the
 /// airframe values a deck lacks in a TOML file; the JSON names parasite_drag first and the
 /// plots are written.
@@ -190,29 +218,16 @@ fn the_command_line_finds_hidden_drag_in_a_recorded_flight() {
         "iyy_kgm2 = 1.2\ncl_de_per_rad = 0.4\ncm_de_per_rad = -1.2\n",
     )
     .unwrap();
-    let json = dir.join("out.json");
-    let plots = dir.join("plots");
-    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
-    let out = bin()
-        .args(["discrepancy", "--model", &deck, "--measured"])
-        .arg(&flight)
-        .arg("--flight")
-        .arg("--airframe")
-        .arg(&frame)
-        .arg("--json")
-        .arg(&json)
-        .arg("--plots")
-        .arg(&plots)
-        .output()
-        .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = discrepancy_json(
+        &dir,
+        &flight,
+        &[
+            "--flight".as_ref(),
+            "--airframe".as_ref(),
+            frame.as_os_str(),
+        ],
     );
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let plots = dir.join("plots");
     assert_eq!(v["effects"][0]["id"], "parasite_drag");
     for key in ["rms_before", "rms_after", "confounded"] {
         assert!(!v[key].is_null(), "no {key} in the JSON");
@@ -244,26 +259,8 @@ fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
     }
     let measured = dir.join("tunnel.csv");
     std::fs::write(&measured, &csv).unwrap();
-    let json = dir.join("out.json");
+    let v = discrepancy_json(&dir, &measured, &[]);
     let plots = dir.join("plots");
-    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
-    let out = bin()
-        .args(["discrepancy", "--model", &deck, "--measured"])
-        .arg(&measured)
-        .arg("--json")
-        .arg(&json)
-        .arg("--plots")
-        .arg(&plots)
-        .output()
-        .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     assert_eq!(v["effects"][0]["id"], "parasite_drag");
     assert!(v["effects"][0]["ci95"]["dCD0"].is_array());
     let svg = std::fs::read_to_string(plots.join("discrepancy-cd.svg")).unwrap();
@@ -272,6 +269,7 @@ fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
     }
     let bad = dir.join("bad.csv");
     std::fs::write(&bad, "alpha,CL\n0,0.1\n").unwrap();
+    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
     let out = bin()
         .args(["discrepancy", "--model", &deck, "--measured"])
         .arg(&bad)

@@ -115,33 +115,31 @@ fn report_json_errors_are_relative_to_the_reference() {
     }
 }
 
+/// Exit code and standard error of `report` on the example deck with `reference`.
+fn report_error(name: &str, reference: &str) -> (Option<i32>, String) {
+    let reference = temp_file(name, reference);
+    let out = bin()
+        .args([
+            "report",
+            &example(),
+            "--reference",
+            reference.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
 #[test]
 fn report_with_a_bad_reference_exits_2_and_says_why() {
-    let reference = temp_file("bad.toml", &REFERENCE.replace("\"CNB\"", "\"CN_BETA\""));
-    let out = bin()
-        .args([
-            "report",
-            &example(),
-            "--reference",
-            reference.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (code, stderr) = report_error("bad.toml", &REFERENCE.replace("\"CNB\"", "\"CN_BETA\""));
+    assert_eq!(code, Some(2));
     assert!(stderr.contains("CN_BETA"), "{stderr}");
-    let reference = temp_file("far.toml", &REFERENCE.replace("mach = 0.06", "mach = 0.5"));
-    let out = bin()
-        .args([
-            "report",
-            &example(),
-            "--reference",
-            reference.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (code, stderr) = report_error("far.toml", &REFERENCE.replace("mach = 0.06", "mach = 0.5"));
+    assert_eq!(code, Some(2));
     assert!(stderr.contains("no condition at Mach 0.5"), "{stderr}");
 }
 
