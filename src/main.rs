@@ -40,6 +40,12 @@ enum FiveDigitRule {
     Original,
 }
 
+#[derive(Clone, Copy, ValueEnum)]
+enum MaximumRule {
+    Greatest,
+    LastRise,
+}
+
 /// The rules that differ between the library and the original program (docs/differences.md):
 /// the library's by default, the original's to reproduce its listings.
 #[derive(Clone, Copy, clap::Args)]
@@ -53,11 +59,17 @@ struct Rules {
     /// reads them (first digit = percent camber; to reproduce its listings; docs/sections.md).
     #[arg(long = "five-digit", value_enum, default_value = "naca")]
     five_digit: FiveDigitRule,
+    /// A section's maximum thickness and camber (and their positions, which the maximum-lift
+    /// method reads): the greatest ordinate (default), or the original program's, the
+    /// ordinate at the last station where it rose (to reproduce its listings;
+    /// docs/section-characteristics.md).
+    #[arg(long = "section-maximum", value_enum, default_value = "greatest")]
+    section_maximum: MaximumRule,
 }
 
 impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
-        use datcom::case::{FiveDigitReading, SectionReynolds};
+        use datcom::case::{FiveDigitReading, MaximumReading, SectionReynolds};
         deck.with_section_reynolds(match self.reynolds {
             ReynoldsRule::Flight => SectionReynolds::Flight,
             ReynoldsRule::Original => SectionReynolds::Original,
@@ -65,6 +77,10 @@ impl Rules {
         .with_five_digit_reading(match self.five_digit {
             FiveDigitRule::Naca => FiveDigitReading::Naca,
             FiveDigitRule::Original => FiveDigitReading::Original,
+        })
+        .with_section_maximum(match self.section_maximum {
+            MaximumRule::Greatest => MaximumReading::Greatest,
+            MaximumRule::LastRise => MaximumReading::LastRise,
         })
     }
 }

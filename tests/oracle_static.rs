@@ -22,8 +22,12 @@ const COLUMNS: [&str; 8] = ["CD", "CL", "CM", "CN", "CA", "XCP", "CLA", "CMA"];
 /// no power, no flaps); raised 2026-11-25 with experimental wing-body data ($EXPRnn, ex7), with
 /// canard configurations, the low-aspect-ratio wing-body ($LARWB, ex9) and the twin vertical
 /// panel pages ($TVTPAN, ex3).
-const FLOOR_FLIGHT: f64 = 0.40;
-const FLOOR_ORIGINAL: f64 = 0.88;
+/// 2026-11-26: with the original's reading of a section's maximum camber (Citation_airfoil)
+/// every column under the original's rules passes the issue's bars, which are now the floors.
+const FLOOR_FLIGHT: [f64; 8] = [0.40; 8];
+/// Issue 4's bars: CD, CA, XCP at least 90 %; CL, CM, CN, CLA, CMA at least 95 % (asked of CL,
+/// CM, CN below CLmax; held here over every row).
+const FLOOR_ORIGINAL: [f64; 8] = [0.90, 0.95, 0.95, 0.95, 0.90, 0.90, 0.95, 0.95];
 
 fn keep_subsonic(mut v: Value) -> Value {
     if let Some(cases) = v["cases"].as_array_mut() {
@@ -57,7 +61,7 @@ fn static_numbers_against_the_original() {
         eprintln!(
             "== rules: {}",
             if rule == SectionReynolds::Original {
-                "original (section Reynolds number, NACA 5-digit reading)"
+                "original (section Reynolds number, NACA 5-digit reading, last-rise section maximum)"
             } else {
                 "library default (flight Reynolds number, NACA 5-digit definition)"
             }
@@ -102,9 +106,10 @@ fn static_numbers_against_the_original() {
             let f = *a as f64 / (*n).max(1) as f64;
             overall.push_str(&format!("{:>9}", format!("{:.1}%", 100.0 * f)));
             assert!(
-                f >= floor,
-                "{rule:?} {}: {a}/{n} below the floor {floor}",
-                COLUMNS[k]
+                f >= floor[k],
+                "{rule:?} {}: {a}/{n} below the floor {}",
+                COLUMNS[k],
+                floor[k]
             );
         }
         eprintln!("{overall}");

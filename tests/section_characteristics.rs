@@ -955,3 +955,58 @@ fn remembered_sections_equal_fresh_ones() {
     assert_ne!(at_02.per_mach[0].mach, at_05.per_mach[0].mach);
     assert_eq!(Ok(at_05), fresh(&shapes[0], 0.5));
 }
+
+/// A mean line with a flat, bumpy crest, as digitised coordinates have (the Citation's
+/// user-defined wing: 0.03738 at x = 0.43469, 0.03727, then 0.03734 at x = 0.49997): the
+/// greatest ordinate is the first peak; the original's search (the ordinate at the last
+/// station where it rose) takes the second. The maximum-lift method reads the position, so
+/// c_lmax follows the rule; the thickness's maximum (single-peaked here) does not move.
+#[test]
+fn section_maximum_reading_greatest_or_last_rise() {
+    use datcom::methods::section::MaximumReading;
+    let base = four_digit(0.0, 0.4, 0.12, 81);
+    let camber: Vec<f64> = base
+        .x
+        .iter()
+        .map(|&x| {
+            // A plateau of 0.037 from 0.35 to 0.6 chord with two crests on it: 0.0377 at
+            // 0.40, 0.0374 at 0.55, a dip between.
+            let plateau = 0.037 * (x / 0.35).min((1.0 - x) / 0.4).min(1.0);
+            plateau
+                + 0.0007 * (-((x - 0.40) / 0.03).powi(2)).exp()
+                + 0.0004 * (-((x - 0.55) / 0.03).powi(2)).exp()
+        })
+        .collect();
+    let mut shape =
+        SectionShape::new(base.x.clone(), camber.clone(), base.half_thickness.clone()).unwrap();
+    let greatest = at_mach(&shape, &[0.2]);
+    shape.maximum_reading = MaximumReading::LastRise;
+    let last_rise = at_mach(&shape, &[0.2]);
+    // Worked from the ordinates: the greatest is the first crest's highest station; the last
+    // rise is the highest station of the second crest.
+    let (gi, _) =
+        camber.iter().enumerate().fold(
+            (0, f64::MIN),
+            |(bi, b), (i, &c)| if c > b { (i, c) } else { (bi, b) },
+        );
+    let li = (1..camber.len())
+        .filter(|&i| camber[i] > camber[i - 1])
+        .last()
+        .unwrap();
+    assert!(
+        base.x[gi] < 0.45 && base.x[li] > 0.5,
+        "the two crests: {} {}",
+        base.x[gi],
+        base.x[li]
+    );
+    assert_eq!(greatest.max_camber, camber[gi]);
+    assert_eq!(greatest.max_camber_x, base.x[gi]);
+    assert_eq!(last_rise.max_camber, camber[li]);
+    assert_eq!(last_rise.max_camber_x, base.x[li]);
+    assert_eq!(greatest.max_thickness_x, last_rise.max_thickness_x);
+    let (g, l) = (
+        greatest.max_lift.as_ref().unwrap().per_condition[0].max_cl,
+        last_rise.max_lift.as_ref().unwrap().per_condition[0].max_cl,
+    );
+    assert!(g != l, "c_lmax reads the camber position: {g} {l}");
+}

@@ -18,6 +18,7 @@ use crate::deck::cards::{AirfoilCard, Cards, DerivUnit, Dim, Surface};
 use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, RawDeck, Value};
 use crate::error::{DeckProblem, Diagnostic, Severity};
+pub use crate::methods::section::MaximumReading;
 
 /// Accessor over one namelist's values that converts to SI.
 struct Nl<'a> {
@@ -334,6 +335,9 @@ pub struct Case {
     pub section_reynolds: SectionReynolds,
     /// How NACA 5-digit designations are read (see [`FiveDigitReading`]).
     pub five_digit: FiveDigitReading,
+    /// Which station gives a section's maximum thickness and camber (see
+    /// [`MaximumReading`]).
+    pub section_maximum: MaximumReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -389,11 +393,22 @@ impl Deck {
         self
     }
 
-    /// The same deck with the original program's rules for both (its section Reynolds number
-    /// and its 5-digit reading), to reproduce its listings.
+    /// The same deck with every case finding a section's maximum thickness and camber by
+    /// `reading`.
+    pub fn with_section_maximum(mut self, reading: MaximumReading) -> Deck {
+        for c in &mut self.cases {
+            c.section_maximum = reading;
+        }
+        self
+    }
+
+    /// The same deck with the original program's rules (its section Reynolds number, its
+    /// 5-digit reading and its search for a section's maximum thickness and camber), to
+    /// reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
+            .with_section_maximum(MaximumReading::LastRise)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -673,6 +688,7 @@ impl Case {
             scale,
             deriv: raw.cards.deriv.unwrap_or_default(),
             section_reynolds: SectionReynolds::default(),
+            section_maximum: MaximumReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),

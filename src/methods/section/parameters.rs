@@ -3,7 +3,7 @@
 //! M50O62 and routine DELY).
 
 use super::interpolation::Ordinates;
-use super::SectionShape;
+use super::{MaximumReading, SectionShape};
 
 /// Chordwise stations of the sharpness parameter Δy: 0.15 % and 6 % of the chord.
 const DELTA_Y_FORE: f64 = 0.0015;
@@ -24,15 +24,34 @@ fn maximum(x: &[f64], y: &[f64]) -> (f64, f64) {
     )
 }
 
+/// The ordinate at the last station where it rose above the one before, and that station;
+/// `(0, 0)` when it never rises.
+fn last_rise(x: &[f64], y: &[f64]) -> (f64, f64) {
+    y.windows(2)
+        .zip(x.iter().skip(1))
+        .filter(|(pair, _)| pair[1] > pair[0])
+        .map(|(pair, &at)| (pair[1], at))
+        .last()
+        .unwrap_or((0.0, 0.0))
+}
+
+/// The section's maximum of `y` by its reading rule.
+fn maximum_by(shape: &SectionShape, y: &[f64]) -> (f64, f64) {
+    match shape.maximum_reading {
+        MaximumReading::Greatest => maximum(&shape.x, y),
+        MaximumReading::LastRise => last_rise(&shape.x, y),
+    }
+}
+
 /// Maximum thickness (both sides) and its station.
 pub(crate) fn max_thickness(shape: &SectionShape) -> (f64, f64) {
-    let (t, x) = maximum(&shape.x, &shape.half_thickness);
+    let (t, x) = maximum_by(shape, &shape.half_thickness);
     (2.0 * t, x)
 }
 
 /// Maximum mean-line ordinate and its station.
 pub(crate) fn max_camber(shape: &SectionShape) -> (f64, f64) {
-    maximum(&shape.x, &shape.camber)
+    maximum_by(shape, &shape.camber)
 }
 
 /// Leading-edge radius when the designation does not fix it: the circle through the nose and

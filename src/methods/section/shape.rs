@@ -31,6 +31,21 @@ pub struct DesignLift {
     pub zero_lift_alpha_deg: f64,
 }
 
+/// Which station gives the section's maximum thickness and maximum camber (and so the
+/// positions the maximum-lift method of DATCOM 4.1.1.4 reads).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MaximumReading {
+    /// The greatest ordinate (the first of equal ones): the handbook's definition.
+    #[default]
+    Greatest,
+    /// As the original program (SECI): the ordinate at the last station where it rose above
+    /// the station before. The same for a smooth section; on digitised coordinates with a
+    /// flat, bumpy crest it can be a lower local peak further aft. For reproducing old
+    /// listings (docs/section-characteristics.md).
+    LastRise,
+}
+
 /// An airfoil section: ordinates at chordwise stations, as fractions of the chord.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SectionShape {
@@ -46,6 +61,8 @@ pub struct SectionShape {
     /// Maximum thickness the designation names, fraction of chord.
     pub max_thickness: Option<f64>,
     pub design: Option<DesignLift>,
+    /// How the maximum thickness and camber are found.
+    pub maximum_reading: MaximumReading,
 }
 
 /// Why ordinates do not make a section.
@@ -95,6 +112,7 @@ impl SectionShape {
             leading_edge_radius: None,
             max_thickness: None,
             design: None,
+            maximum_reading: MaximumReading::Greatest,
         };
         shape.check()?;
         Ok(shape)

@@ -114,7 +114,7 @@ pub fn surface_section(
         (None, None) => return None,
     };
     Some((|| {
-        let (title, shape, warnings) = match source {
+        let (title, mut shape, warnings) = match source {
             Source::User(input) => {
                 let c = user_defined(input)?;
                 let shape = SectionShape::from_coordinates(&c)?;
@@ -126,6 +126,7 @@ pub fn surface_section(
                 (s.title, shape, s.warnings)
             }
         };
+        shape.maximum_reading = case.section_maximum;
         let chord = planform(plan, span)?.exposed.mac;
         let user_slopes_per_deg = input
             .and_then(|i| i.per_mach.get("CLALPA"))
