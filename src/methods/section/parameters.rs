@@ -29,10 +29,9 @@ fn maximum(x: &[f64], y: &[f64]) -> (f64, f64) {
 fn last_rise(x: &[f64], y: &[f64]) -> (f64, f64) {
     y.windows(2)
         .zip(x.iter().skip(1))
-        .filter(|(pair, _)| pair[1] > pair[0])
-        .map(|(pair, &at)| (pair[1], at))
-        .last()
-        .unwrap_or((0.0, 0.0))
+        .rev()
+        .find(|(pair, _)| pair[1] > pair[0])
+        .map_or((0.0, 0.0), |(pair, &at)| (pair[1], at))
 }
 
 /// The section's maximum of `y` by its reading rule.
