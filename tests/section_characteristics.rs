@@ -991,7 +991,7 @@ fn section_maximum_reading_greatest_or_last_rise() {
         );
     let li = (1..camber.len())
         .filter(|&i| camber[i] > camber[i - 1])
-        .last()
+        .next_back()
         .unwrap();
     assert!(
         base.x[gi] < 0.45 && base.x[li] > 0.5,
