@@ -990,8 +990,7 @@ fn section_maximum_reading_greatest_or_last_rise() {
             |(bi, b), (i, &c)| if c > b { (i, c) } else { (bi, b) },
         );
     let li = (1..camber.len())
-        .filter(|&i| camber[i] > camber[i - 1])
-        .next_back()
+        .rfind(|&i| camber[i] > camber[i - 1])
         .unwrap();
     assert!(
         base.x[gi] < 0.45 && base.x[li] > 0.5,
