@@ -41,6 +41,12 @@ enum FiveDigitRule {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum SixARule {
+    Naca,
+    Original,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum MaximumRule {
     Greatest,
     LastRise,
@@ -65,11 +71,23 @@ struct Rules {
     /// docs/section-characteristics.md).
     #[arg(long = "section-maximum", value_enum, default_value = "greatest")]
     section_maximum: MaximumRule,
+    /// NACA 6A designations: NACA's definition (default), or as the original program reads
+    /// them (thickness not straightened aft of 0.8 chord, the plain a = 0.8 or a = 1 mean
+    /// line; to reproduce its listings; docs/sections.md).
+    #[arg(long = "six-a", value_enum, default_value = "naca")]
+    six_a: SixARule,
+    /// Every rule above as the original program has it (its listings' section Reynolds number,
+    /// 5-digit and 6A readings, section maximum), whatever the other options say.
+    #[arg(long)]
+    original: bool,
 }
 
 impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
-        use datcom::case::{FiveDigitReading, MaximumReading, SectionReynolds};
+        use datcom::case::{FiveDigitReading, MaximumReading, SectionReynolds, SixAReading};
+        if self.original {
+            return deck.with_original_rules();
+        }
         deck.with_section_reynolds(match self.reynolds {
             ReynoldsRule::Flight => SectionReynolds::Flight,
             ReynoldsRule::Original => SectionReynolds::Original,
@@ -81,6 +99,10 @@ impl Rules {
         .with_section_maximum(match self.section_maximum {
             MaximumRule::Greatest => MaximumReading::Greatest,
             MaximumRule::LastRise => MaximumReading::LastRise,
+        })
+        .with_six_a_reading(match self.six_a {
+            SixARule::Naca => SixAReading::Naca,
+            SixARule::Original => SixAReading::Original,
         })
     }
 }

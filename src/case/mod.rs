@@ -321,6 +321,20 @@ pub enum FiveDigitReading {
     Original,
 }
 
+/// How a NACA 6A designation is read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SixAReading {
+    /// NACA's definition (Report 903): thickness straight aft of 0.8 chord, the a = 0.8
+    /// (modified) mean line unless `A=` gives another a (docs/sections.md).
+    #[default]
+    Naca,
+    /// As the original program: the thickness left curved (only the printed surfaces are
+    /// straightened), the plain a = 0.8 line with `A=0.8` and the a = 1 line without `A=`
+    /// (COORD6). For reproducing old listings.
+    Original,
+}
+
 /// One case of a deck, typed and in SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Case {
@@ -338,6 +352,8 @@ pub struct Case {
     /// Which station gives a section's maximum thickness and camber (see
     /// [`MaximumReading`]).
     pub section_maximum: MaximumReading,
+    /// How NACA 6A designations are read (see [`SixAReading`]).
+    pub six_a: SixAReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -402,12 +418,21 @@ impl Deck {
         self
     }
 
+    /// The same deck with every case reading NACA 6A designations by `reading`.
+    pub fn with_six_a_reading(mut self, reading: SixAReading) -> Deck {
+        for c in &mut self.cases {
+            c.six_a = reading;
+        }
+        self
+    }
+
     /// The same deck with the original program's rules (its section Reynolds number, its
-    /// 5-digit reading and its search for a section's maximum thickness and camber), to
-    /// reproduce its listings.
+    /// 5-digit and 6A readings and its search for a section's maximum thickness and camber),
+    /// to reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
+            .with_six_a_reading(SixAReading::Original)
             .with_section_maximum(MaximumReading::LastRise)
     }
 
@@ -689,6 +714,7 @@ impl Case {
             deriv: raw.cards.deriv.unwrap_or_default(),
             section_reynolds: SectionReynolds::default(),
             section_maximum: MaximumReading::default(),
+            six_a: SixAReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),

@@ -55,6 +55,8 @@ pub fn section_for(
             .iter()
             .rev()
             .find(|a| a.surface == surface)
-            .map(|card| NacaSection::from_card_read(card, case.five_digit)?.coordinates()),
+            .map(|card| {
+                NacaSection::from_card_with(card, case.five_digit, case.six_a)?.coordinates()
+            }),
     }
 }

@@ -64,6 +64,42 @@ impl NacaSection {
         Ok(s)
     }
 
+    /// The section of a NACA card with 5-digit and 6A designations read by `five_digit` and
+    /// `six_a` (other series are the same either way).
+    pub fn from_card_with(
+        card: &AirfoilCard,
+        five_digit: crate::case::FiveDigitReading,
+        six_a: crate::case::SixAReading,
+    ) -> Result<Self, SectionError> {
+        let mut s = Self::from_card_read(card, five_digit)?;
+        if six_a == crate::case::SixAReading::Original {
+            if let designation::Designation::SixSeries {
+                six_a: true,
+                lift,
+                load_extent,
+                ..
+            } = designation::parse(card.series, &card.designation)?
+            {
+                if let Thickness::Joined(j) = &mut s.thickness {
+                    j.straight_from = None;
+                }
+                if lift > 0 {
+                    let a = load_extent.unwrap_or(1.0);
+                    s.mean_line = MeanLine::Uniform {
+                        design_cl: f64::from(lift) / 10.0,
+                        a,
+                    };
+                }
+                s.warnings.push(format!(
+                    "NACA {}: 6A section read as the original program reads it (thickness not straightened aft of 0.8 chord; the plain a = {} mean line), not NACA's (docs/sections.md)",
+                    card.designation,
+                    load_extent.unwrap_or(1.0)
+                ));
+            }
+        }
+        Ok(s)
+    }
+
     /// The section of `designation` in `series` (the text after the series on the card).
     pub fn parse(series: NacaSeries, designation: &str) -> Result<Self, SectionError> {
         let d = designation::parse(series, designation)?;
@@ -492,6 +528,52 @@ mod tests {
         assert_eq!(read(&card(NacaSeries::Five, "23012")).mean_line, line);
         let four = card(NacaSeries::Four, "2412");
         assert_eq!(read(&four), NacaSection::from_card(&four).unwrap());
+    }
+
+    /// The original's 6A reading (for005's 64A204 A=0.8): the plain a = 0.8 line for
+    /// c_li = 0.2 and the thickness left curved aft of 0.8; NACA's: the modified line and the
+    /// straight thickness. Other 6-series sections read the same either way.
+    #[test]
+    fn the_originals_six_a_reading_keeps_the_plain_line_and_the_curved_thickness() {
+        use crate::case::{FiveDigitReading, SixAReading};
+        let card = |designation: &str| AirfoilCard {
+            surface: crate::deck::cards::Surface::Wing,
+            series: NacaSeries::Six,
+            designation: designation.to_string(),
+            line: 1,
+        };
+        let read =
+            |c: &AirfoilCard, r| NacaSection::from_card_with(c, FiveDigitReading::Naca, r).unwrap();
+        let six_a = card("64A204 A=0.8");
+        let naca = read(&six_a, SixAReading::Naca);
+        let original = read(&six_a, SixAReading::Original);
+        assert_eq!(naca.mean_line, MeanLine::SixAModified { design_cl: 0.2 });
+        assert_eq!(
+            original.mean_line,
+            MeanLine::Uniform {
+                design_cl: 0.2,
+                a: 0.8
+            }
+        );
+        let (Thickness::Joined(n), Thickness::Joined(o)) = (&naca.thickness, &original.thickness)
+        else {
+            panic!("6-series thickness");
+        };
+        assert_eq!(n.straight_from, Some(SIX_A_STRAIGHT_FROM));
+        assert_eq!(o.straight_from, None);
+        // Without A= the original takes the a = 1 line.
+        assert_eq!(
+            read(&card("64A204"), SixAReading::Original).mean_line,
+            MeanLine::Uniform {
+                design_cl: 0.2,
+                a: 1.0
+            }
+        );
+        let plain = card("643-618");
+        assert_eq!(
+            read(&plain, SixAReading::Original),
+            read(&plain, SixAReading::Naca)
+        );
     }
 
     #[test]

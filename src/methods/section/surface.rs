@@ -121,7 +121,7 @@ pub fn surface_section(
                 (c.title, shape, c.warnings)
             }
             Source::Naca(card) => {
-                let s = NacaSection::from_card_read(card, case.five_digit)?;
+                let s = NacaSection::from_card_with(card, case.five_digit, case.six_a)?;
                 let shape = SectionShape::from_naca(&s)?;
                 (s.title, shape, s.warnings)
             }
