@@ -134,3 +134,42 @@ fn the_readme_main_command_prints_the_aeromech1_results() {
         assert!(stdout.contains(page), "no {page:?} in the output");
     }
 }
+
+/// `--original` is every rule of the original at once: the same output as the four options
+/// given one by one, and (on a deck with a 5-digit wing) not the library's defaults.
+#[test]
+fn original_is_every_original_rule_at_once() {
+    let deck = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let run = |extra: &[&str]| {
+        let out = bin()
+            .arg("run")
+            .arg(&deck)
+            .args(["--format", "json"])
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        out.stdout
+    };
+    let all = run(&["--original"]);
+    let one_by_one = run(&[
+        "--reynolds",
+        "original",
+        "--five-digit",
+        "original",
+        "--six-a",
+        "original",
+        "--section-maximum",
+        "last-rise",
+    ]);
+    assert_eq!(all, one_by_one);
+    assert_ne!(
+        all,
+        run(&[]),
+        "the original's rules change this deck's numbers"
+    );
+}
