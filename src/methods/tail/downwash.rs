@@ -435,8 +435,10 @@ pub(crate) fn downwash_from(
         let mut last: Option<VortexSheet> = None;
         for k in 0..points {
             let f = k as f64 / steps;
-            angles.push(zero_lift_deg + f * (a - zero_lift_deg));
-            let at = a126 + f * (a - a126);
+            // Weighted so that the last point is the angle itself, exactly: the curve's slope
+            // there is read at a node, and a rounding below it would read the interval before.
+            angles.push((1.0 - f) * zero_lift_deg + f * a);
+            let at = (1.0 - f) * a126 + f * a;
             let fraction_of_stall = ((at - a126) / (a127 - a126)).abs();
             let Some((mut cl, slope_per_deg)) = read(&wing_alpha, &wing.cl, at, below, End::Linear)
             else {
