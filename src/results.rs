@@ -39,6 +39,10 @@ pub struct DynamicDerivatives {
     pub cnp: Vec<Option<f64>>,
     pub cnr: Vec<Option<f64>>,
     pub clr: Vec<Option<f64>>,
+    /// Extension (not on the original's page): the vertical panels' side force due to yaw
+    /// rate CYr, per rad, where the configuration has a vertical tail or ventral fin; none
+    /// otherwise (docs/dynamic.md).
+    pub cyr: Option<Vec<Option<f64>>>,
     /// Columns (`CLQ`, `CMQ`, `CLAD`, `CMAD`, `CLP`, `CYP`, `CNP`, `CNR`, `CLR`) for which DATCOM
     /// has no method for this configuration: the original prints NDM on their first row.
     pub no_method: Vec<&'static str>,
@@ -84,6 +88,7 @@ impl DynamicDerivatives {
             cnp: nones(n),
             cnr: nones(n),
             clr: nones(n),
+            cyr: None,
             no_method: Vec::new(),
         }
     }
@@ -111,6 +116,9 @@ impl DynamicDerivatives {
                 Column::NoMethod => out.no_method.push(name),
                 Column::Rows(r) => *target = r.clone(),
             }
+        }
+        if let Column::Rows(r) = &d.cyr {
+            out.cyr = Some(r.clone());
         }
         out
     }

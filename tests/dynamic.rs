@@ -658,6 +658,23 @@ fn totals_are_the_sums_of_their_terms() {
                             "{name} {which:?} {column}: no method exactly when no term has one"
                         );
                     }
+                    // The extension CYr: the fins' terms summed; none without fins.
+                    let parts: Vec<&Column> = c.parts.iter().map(|(_, d)| &d.cyr).collect();
+                    let sum = Column::sum(&parts, alpha.len());
+                    if which == TailConfiguration::WingBodyHorizontalTail {
+                        assert_eq!(c.total.cyr, Column::NoMethod, "{name}: WBH CYR");
+                    } else {
+                        for row in 0..alpha.len() {
+                            match (c.total.cyr.at(row), sum.at(row)) {
+                                (Some(a), Some(b)) => assert!(
+                                    (a - b).abs() <= SUM_ROUNDING * b.abs().max(1e-12),
+                                    "{name} {which:?} CYR row {row}: total {a}, sum {b}"
+                                ),
+                                (a, b) => assert_eq!(a, b, "{name} {which:?} CYR row {row}"),
+                            }
+                            checked += 1;
+                        }
+                    }
                 }
             }
         }
@@ -667,4 +684,35 @@ fn totals_are_the_sums_of_their_terms() {
         checked > 0,
         "the bundled deck alone has configurations with tails"
     );
+}
+
+/// CYr (an extension) is the side force whose moments are the panel's Cnr and Clr: worked
+/// from the definitions, Cnr = −CYr·L/b and Clr = CYr·Z/b at every angle, with the panel's arms
+/// L = l cos α + z sin α, Z = z cos α − l sin α; and CYr = −2L/b·CYβ is opposite in sign to
+/// CYβ for a panel behind the reference centre (a yaw rate to the right gives the panel a flow
+/// from the left, as a negative sideslip).
+#[test]
+fn yaw_rate_side_force_is_the_force_behind_cnr_and_clr() {
+    // Same formula evaluated two ways: rounding only.
+    const SAME: f64 = 1e-12;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let deck = datcom::read_deck_file(&path).unwrap();
+    let case = &deck.cases[0];
+    let alpha = &case.flight.as_ref().unwrap().alpha_deg;
+    let b = lateral_reference_length(case).unwrap();
+    let lateral = fin_lateral(case, 0, alpha, Fin::VerticalTail).unwrap();
+    let arms = lateral.fin_terms.as_ref().unwrap();
+    let (l, z) = (arms.arm_x, arms.arm_z);
+    let cyb = lateral.cyb[0].unwrap();
+    let d = fin_dynamic(case, 0, alpha, Fin::VerticalTail).unwrap();
+    for (i, a) in alpha.iter().enumerate() {
+        let (sin, cos) = a.to_radians().sin_cos();
+        let (ll, zz) = (l * cos + z * sin, z * cos - l * sin);
+        let cyr = d.cyr.at(i).unwrap();
+        let close = |x: f64, y: f64| (x - y).abs() <= SAME * y.abs().max(1e-12);
+        assert!(close(cyr, -2.0 * ll / b * cyb), "CYr at {a}");
+        assert!(close(d.cnr.at(i).unwrap(), -cyr * ll / b), "Cnr at {a}");
+        assert!(close(d.clr.at(i).unwrap(), cyr * zz / b), "Clr at {a}");
+        assert!(cyr * cyb < 0.0, "CYr and CYβ of opposite signs at {a}");
+    }
 }

@@ -38,6 +38,7 @@ pub const HEADER: &[&str] = &[
     "CNP",
     "CNR",
     "CLR",
+    "CYR",
 ];
 
 fn cell(v: Option<f64>) -> String {
@@ -102,6 +103,14 @@ pub fn to_string(results: &Results) -> String {
                     }
                     None => row.extend(std::iter::repeat_n(String::new(), 9)),
                 }
+                // Extension: the vertical panels' CYr, empty where there is none.
+                row.push(
+                    c.dynamic
+                        .as_ref()
+                        .and_then(|y| y.cyr.as_ref())
+                        .map(dd)
+                        .unwrap_or_default(),
+                );
                 out.push_str(&row.join(","));
                 out.push('\n');
             }

@@ -688,7 +688,7 @@ fn header(m: &AeroModel, pad: &str) -> String {
     lines.push("Not in this export:".into());
     lines.extend(m.omitted.iter().map(|o| format!("  {o}")));
     lines.extend([
-        "  CYr, Cl and Cn due to alphadot, CD due to sideslip: DATCOM does not estimate them."
+        "  CYr (a datcom-rs extension, JSON and CSV only), Cl and Cn due to alphadot, CD due to sideslip: not DATCOM estimates."
             .into(),
         "  Control derivatives (elevator, aileron, rudder, flaps) and power effects: not computed"
             .into(),

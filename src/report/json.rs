@@ -55,6 +55,10 @@ pub struct DynamicJson {
     pub cnr: Vec<Option<f64>>,
     #[serde(rename = "CLR")]
     pub clr: Vec<Option<f64>>,
+    /// Extension, not on the original's page: the vertical panels' side force due to yaw rate
+    /// (docs/output.md); absent where there is none (and in imported listings).
+    #[serde(rename = "CYR", default, skip_serializing_if = "Option::is_none")]
+    pub cyr: Option<Vec<Option<f64>>>,
     /// Columns for which DATCOM has no method for this configuration (the original's NDM).
     pub no_method: Vec<String>,
 }
@@ -196,6 +200,7 @@ fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
             cnp: d(&y.cnp, u),
             cnr: d(&y.cnr, u),
             clr: d(&y.clr, u),
+            cyr: y.cyr.as_ref().map(|c| d(c, u)),
             no_method: y.no_method.iter().map(|n| n.to_string()).collect(),
         }),
     }
@@ -340,6 +345,7 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                                     cnp: listed_column(d, "CNP"),
                                     cnr: listed_column(d, "CNR"),
                                     clr: listed_column(d, "CLR"),
+                                    cyr: None,
                                     no_method: d
                                         .as_ref()
                                         .map(super::legacy::Table::no_method)

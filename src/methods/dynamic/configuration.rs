@@ -57,7 +57,9 @@ pub fn wing_body_dynamic(wing: &Dynamic, body: &Dynamic, wing_body: &WingBody) -
 /// from the panel's CYβ (with sidewash) and the arms of its MAC, l (aft of XCG) and z (above
 /// ZCG): with Z = z cos α − l sin α, L = l cos α + z sin α and b the lateral reference length,
 /// CYp = 2(Z − z)/b·CYβ, Cnp = −2L(Z − z)/b²·CYβ, Cnr = 2L²/b²·CYβ, Clp = 2Z(Z − z)/b²·CYβ,
-/// Clr = −2LZ/b²·CYβ. The pitch-rate columns have no method of their own.
+/// Clr = −2LZ/b²·CYβ; and, as an extension the original does not print, CYr = −2L/b·CYβ, the
+/// side force whose moments about the reference centre are those Cnr and Clr. The pitch-rate
+/// columns have no method of their own.
 ///
 /// For the ventral fin the original writes CYp with (2Z − z) and takes the vertical tail's
 /// CYβ in Cnr and Clp; we use the fin's own terms (docs/dynamic.md).
@@ -102,6 +104,7 @@ pub fn fin_dynamic(
     out.cnr = each(&|c, _, ll| 2.0 * ll * ll * c / (b * b));
     out.clp = each(&|c, zz, _| 2.0 * c * zz * (zz - z) / (b * b));
     out.clr = each(&|c, zz, ll| -2.0 * c * ll * zz / (b * b));
+    out.cyr = each(&|c, _, ll| -2.0 * ll * c / b);
     Ok(out)
 }
 
@@ -194,8 +197,10 @@ pub fn wing_body_tail_dynamic(
     total.cnp = sum(|d| &d.cnp);
     total.cnr = sum(|d| &d.cnr);
     total.clr = sum(|d| &d.clr);
+    total.cyr = sum(|d| &d.cyr);
     if !with_fins {
         total.clr = Column::NoMethod;
+        total.cyr = Column::NoMethod;
     }
     if totals.terms.wing_body.terms.wing.planform_type != WingType::Straight {
         total.clq = Column::NoMethod;

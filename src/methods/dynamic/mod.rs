@@ -200,6 +200,11 @@ pub struct Dynamic {
     pub cnp: Column,
     pub cnr: Column,
     pub clr: Column,
+    /// Extension, not printed by the original: the side force due to yaw rate CYr of the
+    /// vertical panels, −2 (l cos α + z sin α)/b · CYβ per panel, the side force whose yawing
+    /// and rolling moments are the panels' Cnr and Clr ([`fin_dynamic`]). No method elsewhere
+    /// (DATCOM gives none for the wing and body).
+    pub cyr: Column,
     pub warnings: Vec<DynamicWarning>,
 }
 
@@ -217,6 +222,7 @@ impl Dynamic {
             cnp: Column::NoMethod,
             cnr: Column::NoMethod,
             clr: Column::NoMethod,
+            cyr: Column::NoMethod,
             warnings: Vec::new(),
         }
     }
