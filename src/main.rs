@@ -47,6 +47,12 @@ enum SixARule {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum ZeroLiftRule {
+    Handbook,
+    Original,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum MaximumRule {
     Greatest,
     LastRise,
@@ -76,6 +82,11 @@ struct Rules {
     /// line; to reproduce its listings; docs/sections.md).
     #[arg(long = "six-a", value_enum, default_value = "naca")]
     six_a: SixARule,
+    /// The wing's zero-lift angle: DATCOM 4.1.3.1 (default), or as the original program reads
+    /// it (the section's zero-lift angle at the last Mach number, its reading of figure
+    /// 4.1.3.1-4; to reproduce its listings; docs/wing.md).
+    #[arg(long = "zero-lift", value_enum, default_value = "handbook")]
+    zero_lift: ZeroLiftRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,
     /// 5-digit and 6A readings, section maximum), whatever the other options say.
     #[arg(long)]
@@ -84,7 +95,9 @@ struct Rules {
 
 impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
-        use datcom::case::{FiveDigitReading, MaximumReading, SectionReynolds, SixAReading};
+        use datcom::case::{
+            FiveDigitReading, MaximumReading, SectionReynolds, SixAReading, ZeroLiftReading,
+        };
         if self.original {
             return deck.with_original_rules();
         }
@@ -103,6 +116,10 @@ impl Rules {
         .with_six_a_reading(match self.six_a {
             SixARule::Naca => SixAReading::Naca,
             SixARule::Original => SixAReading::Original,
+        })
+        .with_zero_lift_reading(match self.zero_lift {
+            ZeroLiftRule::Handbook => ZeroLiftReading::Handbook,
+            ZeroLiftRule::Original => ZeroLiftReading::Original,
         })
     }
 }

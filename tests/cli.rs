@@ -165,6 +165,8 @@ fn original_is_every_original_rule_at_once() {
         "original",
         "--section-maximum",
         "last-rise",
+        "--zero-lift",
+        "original",
     ]);
     assert_eq!(all, one_by_one);
     assert_ne!(

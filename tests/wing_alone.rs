@@ -599,3 +599,49 @@ fn wing_charts_give_their_data_statement_values() {
         SPOTS,
     );
 }
+
+/// Figure 4.1.3.1-4 as the original's CALCA0 reads it, worked by hand for the Citation's
+/// exposed wing (λ = 0.34169, A = 7.9396, Λc/4 = 1.3°; a build of the original printed
+/// Δα0/θ = −0.399651 for it). Sweep fraction 1.3/5 = 0.26 between 0° and 5°; the aspect-ratio
+/// fraction (7.9396 − 6)/4 = 0.48491. Taper 0.5 curve, A = 6 and 10 (DAP columns 6 and 7 at
+/// sweep 0° and 5°: −0.412, −0.409; −0.410, −0.4095): −0.41122 and −0.40987, so −0.41057 at A.
+/// Taper 0 curve, read on the pair one lower, A = 3.5 and 6 (columns 2 and 3: −0.384, −0.3825;
+/// −0.3685, −0.367): −0.38361 and −0.36811, so −0.37609 at the same fraction. Taper fraction
+/// 0.34169/0.5 = 0.68338: −0.37609 + 0.68338 (−0.41057 + 0.37609) = −0.39965. The linear
+/// reading of the same chart gives −0.40336 (taper 0, A = 10: −0.409, −0.408 in place of the
+/// pair one lower).
+#[test]
+fn twist_term_read_as_the_original_by_hand() {
+    use datcom::methods::wing::twist_term_as_the_original;
+    let mut w = Vec::new();
+    let original = twist_term_as_the_original(0.341688156, 7.9396224, 1.30000353, &mut w).unwrap();
+    assert!((original - (-0.39965)).abs() < 2e-5, "{original}");
+    // At or below A = 6, and at a taper node, the reading is the linear one.
+    let p = twisted_planform();
+    let linear = |t: f64, a: f64| {
+        let mut q = p.clone();
+        q.taper = t;
+        q.aspect_ratio = a;
+        datcom::methods::wing::wing_zero_lift_angle(
+            &q,
+            0.0,
+            -1.0,
+            false,
+            None,
+            0.2,
+            &mut Vec::new(),
+        )
+        .unwrap()
+        .per_twist
+        .unwrap()
+    };
+    for (t, a) in [(0.34, 5.0), (0.5, 8.0), (0.0, 7.0), (0.8, 2.0)] {
+        let o = twist_term_as_the_original(t, a, p.quarter_chord.deg, &mut w).unwrap();
+        assert!(
+            (o - linear(t, a)).abs() < 1e-12,
+            "λ {t}, A {a}: {o} {}",
+            linear(t, a)
+        );
+    }
+    assert!((linear(0.341688156, 7.9396224) - original).abs() > 3e-3);
+}

@@ -19,6 +19,7 @@ use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, RawDeck, Value};
 use crate::error::{DeckProblem, Diagnostic, Severity};
 pub use crate::methods::section::MaximumReading;
+pub use crate::methods::wing::ZeroLiftReading;
 
 /// Accessor over one namelist's values that converts to SI.
 struct Nl<'a> {
@@ -354,6 +355,8 @@ pub struct Case {
     pub section_maximum: MaximumReading,
     /// How NACA 6A designations are read (see [`SixAReading`]).
     pub six_a: SixAReading,
+    /// How the wing's zero-lift angle is read (see [`ZeroLiftReading`]).
+    pub zero_lift: ZeroLiftReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -426,14 +429,23 @@ impl Deck {
         self
     }
 
+    /// The same deck with every case reading the wing's zero-lift angle by `reading`.
+    pub fn with_zero_lift_reading(mut self, reading: ZeroLiftReading) -> Deck {
+        for c in &mut self.cases {
+            c.zero_lift = reading;
+        }
+        self
+    }
+
     /// The same deck with the original program's rules (its section Reynolds number, its
-    /// 5-digit and 6A readings and its search for a section's maximum thickness and camber),
-    /// to reproduce its listings.
+    /// 5-digit and 6A readings, its search for a section's maximum thickness and camber and
+    /// its reading of the wing's zero-lift angle), to reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
             .with_six_a_reading(SixAReading::Original)
             .with_section_maximum(MaximumReading::LastRise)
+            .with_zero_lift_reading(ZeroLiftReading::Original)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -715,6 +727,7 @@ impl Case {
             section_reynolds: SectionReynolds::default(),
             section_maximum: MaximumReading::default(),
             six_a: SixAReading::default(),
+            zero_lift: ZeroLiftReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),

@@ -74,7 +74,10 @@ pub use planform::{
     Chords, ExtendedOutboard, MaxThicknessStations, PanelTerms, Sweep, WingPlanform,
 };
 pub use section_inputs::{wing_section, WingSection};
-pub use zero_lift_angle::{wing_zero_lift_angle, ZeroLiftAngle};
+pub use zero_lift_angle::{
+    twist_term_as_the_original, wing_zero_lift_angle, wing_zero_lift_angle_read, ZeroLiftAngle,
+    ZeroLiftReading,
+};
 
 /// A CLA that differs from the analytic slope by more than this fraction makes the moment
 /// "not applicable" from that angle on (as the original).
@@ -384,13 +387,14 @@ pub fn wing_alone_with_section(
     let beta = (1.0 - mach * mach).abs().sqrt();
     let wing_alpha: Vec<f64> = alpha_deg.iter().map(|a| a + incidence_deg).collect();
 
-    let zero_lift_angle = wing_zero_lift_angle(
+    let zero_lift_angle = wing_zero_lift_angle_read(
         &p,
         section.zero_lift_alpha_deg,
         twist_deg,
         section.cambered,
         section.thickness_ratio,
         mach,
+        case.zero_lift,
         &mut warnings,
     )?;
     let class = aspect_ratio_class(&p, section.arcl, &mut warnings)?;

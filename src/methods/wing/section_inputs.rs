@@ -2,6 +2,7 @@
 //! values the section method computes (DATCOM 4.1.1; `methods::section`), as the original's
 //! SECO fills the words the user leaves unset.
 
+use super::zero_lift_angle::ZeroLiftReading;
 use serde::Serialize;
 
 use super::{WingMethodError, WingWarning};
@@ -90,8 +91,23 @@ pub fn wing_section(
         .ok_or(WingMethodError::NoSectionLiftCurveSlope {
             mach: condition.mach,
         })?;
+    // The original's rule: the zero-lift angle its section method left after the last Mach
+    // number it computed, for every condition (SECO stores it once, after the Mach loop).
+    let at_last_mach = || {
+        let c = computed?;
+        case.conditions
+            .iter()
+            .zip(&c.per_mach)
+            .filter_map(|(k, m)| m.zero_lift_alpha_deg.map(|z| (k.mach_index, z)))
+            .max_by_key(|(i, _)| *i)
+            .map(|(_, z)| z)
+    };
+    let section_zero_lift = match case.zero_lift {
+        ZeroLiftReading::Handbook => computed.map(|c| c.zero_lift_alpha_deg),
+        ZeroLiftReading::Original => at_last_mach().or(computed.map(|c| c.zero_lift_alpha_deg)),
+    };
     let zero_lift_alpha_deg = scalar(user, &["ALPHAO", "ALPHA0"])
-        .or(computed.map(|c| c.zero_lift_alpha_deg))
+        .or(section_zero_lift)
         .unwrap_or_else(|| {
             let cli = scalar(user, &["CLI"]).unwrap_or(0.0);
             let ai = scalar(user, &["ALPHAI"]).unwrap_or(0.0);

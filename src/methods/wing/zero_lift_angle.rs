@@ -6,6 +6,81 @@ use super::figures::{self, CAMBER_MACH_CORRECTION, TWIST_ZERO_LIFT_ANGLE};
 use super::planform::WingPlanform;
 use super::{WingMethodError, WingWarning};
 
+/// How the wing's zero-lift angle is read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ZeroLiftReading {
+    /// DATCOM 4.1.3.1: the section's low-speed zero-lift angle, figure 4.1.3.1-4 read linearly
+    /// in taper ratio, aspect ratio and sweep.
+    #[default]
+    Handbook,
+    /// As the original program (SECO, CALCA0): the section's zero-lift angle as its section
+    /// method left it after the last Mach number it computed (for every Mach number of the
+    /// case), and figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does. For
+    /// reproducing old listings (docs/wing.md).
+    Original,
+}
+
+/// Nodes of figure 4.1.3.1-4's taper ratio and aspect ratio, and the distance within which
+/// the original takes a node's curve without interpolating (CALCA0).
+const TWIST_TAPER_NODES: [f64; 3] = [0.0, 0.5, 1.0];
+const TWIST_ASPECT_NODES: [f64; 4] = [1.5, 3.5, 6.0, 10.0];
+const ORIGINAL_NODE_SNAP: f64 = 0.02;
+
+/// Where `x` lies among `nodes` as the original's CALCA0 brackets it: `(upper, fraction)` with
+/// the fraction from node `upper − 1`, or `(node, None)` when `x` is within
+/// [`ORIGINAL_NODE_SNAP`] of a node or beyond the ends (the end node).
+fn original_bracket(x: f64, nodes: &[f64]) -> (usize, Option<f64>) {
+    for (i, &n) in nodes.iter().enumerate() {
+        if (x - n).abs() < ORIGINAL_NODE_SNAP {
+            return (i, None);
+        }
+        if x < n {
+            return if i == 0 {
+                (0, None)
+            } else {
+                (i, Some((x - nodes[i - 1]) / (n - nodes[i - 1])))
+            };
+        }
+    }
+    (nodes.len() - 1, None)
+}
+
+/// Figure 4.1.3.1-4 (Δα0/θ) read as the original's CALCA0 reads it: each variable bracketed
+/// on its own (a value within 0.02 of a node takes the node), linear in sweep, then in aspect
+/// ratio, then in taper ratio; but on the lower taper curve, when the aspect ratio lies above
+/// 6, it reads the aspect-ratio pair one lower (3.5 and 6, with the fraction between 6 and 10;
+/// above 10, the curve at 6), its table having ten columns for the twelve curves. The same as
+/// the linear reading wherever the taper ratio or the aspect ratio is at a node or the aspect
+/// ratio is at most 6.
+pub fn twist_term_as_the_original(
+    taper: f64,
+    aspect_ratio: f64,
+    sweep_deg: f64,
+    warnings: &mut Vec<WingWarning>,
+) -> Result<f64, WingMethodError> {
+    let (t_upper, t_fraction) = original_bracket(taper, &TWIST_TAPER_NODES);
+    let (a_upper, a_fraction) = original_bracket(aspect_ratio, &TWIST_ASPECT_NODES);
+    // The aspect ratio read on a taper curve, from the pair of nodes ending at `upper`.
+    let on_pair = |upper: usize| match a_fraction {
+        Some(f) => {
+            TWIST_ASPECT_NODES[upper - 1]
+                + f * (TWIST_ASPECT_NODES[upper] - TWIST_ASPECT_NODES[upper - 1])
+        }
+        None => TWIST_ASPECT_NODES[upper],
+    };
+    let mut curve =
+        |t: f64, a: f64| figures::read(TWIST_ZERO_LIFT_ANGLE, &[t, a, sweep_deg], warnings);
+    let upper = curve(TWIST_TAPER_NODES[t_upper], on_pair(a_upper))?;
+    let Some(f) = t_fraction else {
+        return Ok(upper);
+    };
+    let last = TWIST_ASPECT_NODES.len() - 1;
+    let lower_pair = if a_upper == last { last - 1 } else { a_upper };
+    let lower = curve(TWIST_TAPER_NODES[t_upper - 1], on_pair(lower_pair))?;
+    Ok(lower + f * (upper - lower))
+}
+
 /// The zero-lift angle and its terms, degrees.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ZeroLiftAngle {
@@ -38,18 +113,50 @@ pub fn wing_zero_lift_angle(
     mach: f64,
     warnings: &mut Vec<WingWarning>,
 ) -> Result<ZeroLiftAngle, WingMethodError> {
-    let per_twist = if twist_deg != 0.0 {
-        Some(figures::read(
-            TWIST_ZERO_LIFT_ANGLE,
-            &[
-                planform.taper,
-                planform.aspect_ratio,
-                planform.quarter_chord.deg,
-            ],
+    wing_zero_lift_angle_read(
+        planform,
+        section_deg,
+        twist_deg,
+        cambered,
+        thickness_ratio,
+        mach,
+        ZeroLiftReading::Handbook,
+        warnings,
+    )
+}
+
+/// [`wing_zero_lift_angle`] with figure 4.1.3.1-4 read by `reading`.
+#[allow(clippy::too_many_arguments)]
+pub fn wing_zero_lift_angle_read(
+    planform: &WingPlanform,
+    section_deg: f64,
+    twist_deg: f64,
+    cambered: bool,
+    thickness_ratio: Option<f64>,
+    mach: f64,
+    reading: ZeroLiftReading,
+    warnings: &mut Vec<WingWarning>,
+) -> Result<ZeroLiftAngle, WingMethodError> {
+    let (taper, aspect_ratio, sweep) = (
+        planform.taper,
+        planform.aspect_ratio,
+        planform.quarter_chord.deg,
+    );
+    let per_twist = if twist_deg == 0.0 {
+        None
+    } else if reading == ZeroLiftReading::Original {
+        Some(twist_term_as_the_original(
+            taper,
+            aspect_ratio,
+            sweep,
             warnings,
         )?)
     } else {
-        None
+        Some(figures::read(
+            TWIST_ZERO_LIFT_ANGLE,
+            &[taper, aspect_ratio, sweep],
+            warnings,
+        )?)
     };
     let untwisted = section_deg + per_twist.map_or(0.0, |d| d * twist_deg);
     let mach_factor = match (cambered, thickness_ratio) {
