@@ -396,45 +396,36 @@ impl crate::error::Diagnosed for Deck {
 }
 
 impl Deck {
-    /// The same deck with every case using `rule` for the section Reynolds number.
-    pub fn with_section_reynolds(mut self, rule: SectionReynolds) -> Deck {
-        for c in &mut self.cases {
-            c.section_reynolds = rule;
-        }
+    /// The same deck with `set` applied to every case.
+    fn each_case(mut self, set: impl Fn(&mut Case)) -> Deck {
+        self.cases.iter_mut().for_each(set);
         self
     }
 
+    /// The same deck with every case using `rule` for the section Reynolds number.
+    pub fn with_section_reynolds(self, rule: SectionReynolds) -> Deck {
+        self.each_case(|c| c.section_reynolds = rule)
+    }
+
     /// The same deck with every case reading NACA 5-digit designations by `reading`.
-    pub fn with_five_digit_reading(mut self, reading: FiveDigitReading) -> Deck {
-        for c in &mut self.cases {
-            c.five_digit = reading;
-        }
-        self
+    pub fn with_five_digit_reading(self, reading: FiveDigitReading) -> Deck {
+        self.each_case(|c| c.five_digit = reading)
     }
 
     /// The same deck with every case finding a section's maximum thickness and camber by
     /// `reading`.
-    pub fn with_section_maximum(mut self, reading: MaximumReading) -> Deck {
-        for c in &mut self.cases {
-            c.section_maximum = reading;
-        }
-        self
+    pub fn with_section_maximum(self, reading: MaximumReading) -> Deck {
+        self.each_case(|c| c.section_maximum = reading)
     }
 
     /// The same deck with every case reading NACA 6A designations by `reading`.
-    pub fn with_six_a_reading(mut self, reading: SixAReading) -> Deck {
-        for c in &mut self.cases {
-            c.six_a = reading;
-        }
-        self
+    pub fn with_six_a_reading(self, reading: SixAReading) -> Deck {
+        self.each_case(|c| c.six_a = reading)
     }
 
     /// The same deck with every case reading the wing's zero-lift angle by `reading`.
-    pub fn with_zero_lift_reading(mut self, reading: ZeroLiftReading) -> Deck {
-        for c in &mut self.cases {
-            c.zero_lift = reading;
-        }
-        self
+    pub fn with_zero_lift_reading(self, reading: ZeroLiftReading) -> Deck {
+        self.each_case(|c| c.zero_lift = reading)
     }
 
     /// The same deck with the original program's rules (its section Reynolds number, its
