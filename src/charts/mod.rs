@@ -15,7 +15,7 @@
 mod lookup;
 mod parse;
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::fmt;
 use std::sync::OnceLock;
 
@@ -145,9 +145,22 @@ fn registry() -> &'static Registry {
     })
 }
 
+/// The charts by id, for the lookups of every method call: hashing a short id is cheaper than
+/// the string comparisons of a tree search among ids that share long prefixes.
+fn index() -> &'static HashMap<&'static str, &'static Chart> {
+    static INDEX: OnceLock<HashMap<&'static str, &'static Chart>> = OnceLock::new();
+    INDEX.get_or_init(|| {
+        registry()
+            .charts
+            .iter()
+            .map(|(id, chart)| (id.as_str(), chart))
+            .collect()
+    })
+}
+
 /// The chart with this id (`4.1.3.2-49`, ...), when it is embedded and valid.
 pub fn get(id: &str) -> Option<&'static Chart> {
-    registry().charts.get(id)
+    index().get(id).copied()
 }
 
 /// Every valid embedded chart.

@@ -154,8 +154,33 @@ impl NacaSection {
     }
 
     /// The coordinate table at the original's 60 stations ([`super::stations`]).
+    ///
+    /// A pure function of the section, asked for several times per case (the section page, the
+    /// section characteristics, the surfaces' methods): the last few tables are remembered per
+    /// thread, keyed by the whole section compared exactly.
     pub fn coordinates(&self) -> Result<SectionCoordinates, SectionError> {
-        Ok(self.coordinates_at(tables::stations()?))
+        const REMEMBERED: usize = 8;
+        thread_local! {
+            static LAST: std::cell::RefCell<Vec<(NacaSection, SectionCoordinates)>> =
+                const { std::cell::RefCell::new(Vec::new()) };
+        }
+        if let Some(hit) = LAST.with(|l| {
+            l.borrow()
+                .iter()
+                .find(|(s, _)| s == self)
+                .map(|(_, c)| c.clone())
+        }) {
+            return Ok(hit);
+        }
+        let table = self.coordinates_at(tables::stations()?);
+        LAST.with(|l| {
+            let mut l = l.borrow_mut();
+            if l.len() == REMEMBERED {
+                l.remove(0);
+            }
+            l.push((self.clone(), table.clone()));
+        });
+        Ok(table)
     }
 }
 
