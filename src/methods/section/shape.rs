@@ -39,7 +39,7 @@ pub enum MaximumReading {
     /// The greatest ordinate (the first of equal ones): the handbook's definition.
     #[default]
     Greatest,
-    /// As the original program (SECI): the ordinate at the last station where it rose above
+    /// As the original program (M50O62): the ordinate at the last station where it rose above
     /// the station before. The same for a smooth section; on digitised coordinates with a
     /// flat, bumpy crest it can be a lower local peak further aft. For reproducing old
     /// listings (docs/section-characteristics.md).
