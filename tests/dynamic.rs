@@ -8,8 +8,9 @@
 //! Reynolds number and NACA 5-digit reading, floors asserted; the library default reported). A printed number counts; so does an NDM
 //! (ours must mark the column as without method), and a number we give where the original
 //! prints a blank. The ventral-fin pages are checked once more with the original's ventral-fin
-//! defect applied to ours (CYp with (2Z − z), Cnr and Clp with the vertical tail's CYβ;
-//! docs/dynamic.md), not counted in the totals. Run `cargo test --test dynamic -- --nocapture`
+//! defects applied to ours (the fin's planform with the vertical tail's sweep; CYp with
+//! (2Z − z), Cnr and Clp with the vertical tail's CYβ; docs/dynamic.md), not counted in the
+//! totals. Run `cargo test --test dynamic -- --nocapture`
 //! for the figures per configuration and per case.
 
 mod common;
@@ -17,7 +18,6 @@ mod common;
 use std::collections::BTreeMap;
 
 use datcom::case::{Case, Deck, SectionReynolds};
-use datcom::geometry::Span;
 use datcom::methods::body::subsonic_limit;
 use datcom::methods::dynamic::fin_dynamic;
 use datcom::methods::lateral::{fin_lateral, lateral_reference_length, Fin};
@@ -33,10 +33,9 @@ const MACH_PRINTED: f64 = 0.0005;
 /// docs/dynamic.md explains each miss).
 const FLOORS: [usize; 9] = [35, 35, 159, 160, 351, 476, 341, 460, 462];
 /// The ventral-fin pages with the original's ventral-fin defects applied to ours (test only,
-/// not counted in `FLOORS`; docs/dynamic.md, "The ventral fin"): CYp, Clp and Cnr follow the
-/// defects (Cnr with the fin arm the original gets from the vertical tail's sweep); the three
-/// Clr left are at α = −4°, where the total crosses zero.
-const FLOORS_VENTRAL_FIN_WITH_DEFECT: [usize; 9] = [3, 3, 45, 45, 45, 45, 45, 45, 42];
+/// not counted in `FLOORS`; docs/dynamic.md, "The ventral fin"): the fin's planform with the
+/// vertical tail's sweep, and SUBWBT's and CLRDER's fin terms as written; every number agrees.
+const FLOORS_VENTRAL_FIN_WITH_DEFECT: [usize; 9] = [3, 3, 45, 45, 45, 45, 45, 45, 45];
 
 #[derive(Default)]
 struct Tally {
@@ -215,51 +214,56 @@ fn run(decks: &[(String, Deck, String)], mode: Mode) -> Tally {
 
 /// Our results for a configuration with a ventral fin, with the original's ventral-fin defects
 /// applied (docs/dynamic.md, differences 2 and 7), for this test only: our total minus our fin
-/// term ([`fin_dynamic`]) plus the fin term as the original codes it, CYp = (2Z − z)/b·CYβ_F in
-/// place of 2(Z − z)/b·CYβ_F, and Cnr = 2L²/b²·CYβ_V, Clp = 2Z(Z − z)/b²·CYβ_V with the
-/// vertical tail's CYβ_V in place of the fin's CYβ_F (Cnp keeps the fin's, as the original),
-/// all four (SUBWBT's) on the original's fin arm l: its fin planform takes the vertical tail's
-/// sweep, which moves the fin's MAC. Clr (CLRDER) is left as ours. z and both CYβ are the
-/// library's (`fin_lateral`); Z = z cos α − l sin α, L = l cos α + z sin α. None when a term is
-/// missing.
+/// term ([`fin_dynamic`]) plus the fin term as the original computes it.
+///
+/// - Its fin planform has the vertical tail's sweep angles (its $VFPLNF reader stores the
+///   vertical tail's SAVSI and SAVSO in the fin's angle slots): the fin's sideslip terms are
+///   computed here ([`fin_lateral`]) on a copy of the case whose fin carries the vertical tail's
+///   SAVSI and SAVSO, which moves the fin's MAC, hence its arm l, and changes its lift slope,
+///   hence its CYβ_F. The height arm z does not depend on the sweep.
+/// - Its rate terms (SUBWBT, CLRDER) on that geometry: CYp = (2Z − z)/b·CYβ_F in place of
+///   2(Z − z)/b·CYβ_F; Cnr = 2L²/b²·CYβ_V and Clp = 2Z(Z − z)/b²·CYβ_V with the vertical
+///   tail's CYβ_V in place of the fin's; Cnp and Clr as the handbook's, with the fin's CYβ_F.
+///
+/// Z = z cos α − l sin α, L = l cos α + z sin α. None when a term is missing.
 fn with_the_original_fin_defect(case: &Case, ours: &ConditionResults) -> Option<ConditionResults> {
-    // The fin term the test recomputes with the fin's own CYβ against the library's: the
-    // same formulas, so rounding only.
+    // The fin term the test recomputes on our geometry against the library's: the same
+    // formulas, so rounding only.
     const SAME_FORMULA: f64 = 1e-12;
     let k = case.conditions.iter().position(|c| *c == ours.condition)?;
     let alpha = &ours.alpha_deg;
-    let fin = fin_lateral(case, k, alpha, Fin::VentralFin).ok()?;
-    let tail = fin_lateral(case, k, alpha, Fin::VerticalTail).ok()?;
-    let cyb_f = fin.cyb.first().copied().flatten()?;
-    let cyb_v = tail.cyb.first().copied().flatten()?;
-    let arms = fin.fin_terms.as_ref()?;
-    let (l, z) = (arms.arm_x, arms.arm_z);
-    // The original's fin arm: its fin planform takes the vertical tail's sweep angles (SAVSI
-    // read at the fin's CHSTAT), which places the fin's MAC elsewhere along x.
-    let l_original = {
-        let vf = case.ventral_fin.as_ref()?;
-        let mut swept_as_tail = vf.clone();
-        swept_as_tail.savsi_deg = case.vertical_tail.as_ref()?.savsi_deg;
-        let ours = datcom::geometry::planform(vf, Span::Single).ok()?;
-        let original = datcom::geometry::planform(&swept_as_tail, Span::Single).ok()?;
-        l - ours.x_mac_le + original.x_mac_le
-    };
     let b = lateral_reference_length(case)?;
+    let fin_terms = |c: &Case| -> Option<(f64, f64, f64)> {
+        let fin = fin_lateral(c, k, alpha, Fin::VentralFin).ok()?;
+        let arms = fin.fin_terms.as_ref()?;
+        Some((fin.cyb.first().copied().flatten()?, arms.arm_x, arms.arm_z))
+    };
+    let (cyb_f, l, z) = fin_terms(case)?;
+    let swept_as_tail = {
+        let tail = case.vertical_tail.as_ref()?;
+        let mut c = case.clone();
+        let fin = c.ventral_fin.as_mut()?;
+        fin.savsi_deg = tail.savsi_deg;
+        fin.savso_deg = tail.savso_deg;
+        c
+    };
+    let (cyb_fo, l_o, z_o) = fin_terms(&swept_as_tail)?;
+    let tail = fin_lateral(case, k, alpha, Fin::VerticalTail).ok()?;
+    let cyb_v = tail.cyb.first().copied().flatten()?;
     let our_fin = fin_dynamic(case, k, alpha, Fin::VentralFin).ok()?;
     let mut out = ours.clone();
     let d = out.dynamic.as_mut()?;
     for (i, a) in alpha.iter().enumerate() {
         let (sin, cos) = a.to_radians().sin_cos();
-        let zz = z * cos - l * sin;
-        let ll = l * cos + z * sin;
-        let (zz_o, ll_o) = (z * cos - l_original * sin, l_original * cos + z * sin);
+        let (zz, ll) = (z * cos - l * sin, l * cos + z * sin);
+        let (zz_o, ll_o) = (z_o * cos - l_o * sin, l_o * cos + z_o * sin);
         // (column, our fin term recomputed, the original's fin term)
         let columns = [
             (
                 &mut d.cyp,
                 &our_fin.cyp,
                 2.0 * (zz - z) / b * cyb_f,
-                (2.0 * zz_o - z) / b * cyb_f,
+                (2.0 * zz_o - z_o) / b * cyb_fo,
             ),
             (
                 &mut d.cnr,
@@ -271,13 +275,19 @@ fn with_the_original_fin_defect(case: &Case, ours: &ConditionResults) -> Option<
                 &mut d.clp,
                 &our_fin.clp,
                 2.0 * zz * (zz - z) / (b * b) * cyb_f,
-                2.0 * zz_o * (zz_o - z) / (b * b) * cyb_v,
+                2.0 * zz_o * (zz_o - z_o) / (b * b) * cyb_v,
             ),
             (
                 &mut d.cnp,
                 &our_fin.cnp,
                 -(ll * 2.0 * (zz - z)) * cyb_f / (b * b),
-                -(ll_o * 2.0 * (zz_o - z)) * cyb_f / (b * b),
+                -(ll_o * 2.0 * (zz_o - z_o)) * cyb_fo / (b * b),
+            ),
+            (
+                &mut d.clr,
+                &our_fin.clr,
+                -2.0 * ll * zz * cyb_f / (b * b),
+                -2.0 * ll_o * zz_o * cyb_fo / (b * b),
             ),
         ];
         for (total, library, recomputed, original) in columns {
@@ -684,6 +694,59 @@ fn totals_are_the_sums_of_their_terms() {
         checked > 0,
         "the bundled deck alone has configurations with tails"
     );
+}
+
+/// The cause of the ventral-fin misses, pinned: with the vertical tail's SAVSI given to the fin
+/// (the original's $VFPLNF reader fills the fin's angle slots from the vertical tail's input),
+/// the library's fin sideslip terms are the ones a build of the original's source prints for
+/// Citation_myself (SUBWBT's and CLRDER's inputs: fin CYβ −2.18830E-4 per degree, arm l 8.55133
+/// ft, z −11.29667 ft; the vertical tail's −5.82819E-3, 18.76402 ft, 6.96542 ft), while the
+/// fin's own 80° sweep places its MAC 3.86 ft further aft (l 12.41 ft) and lowers its lift
+/// slope (CYβ −2.054E-4).
+#[test]
+fn the_originals_fin_is_the_fin_swept_as_the_vertical_tail() {
+    let Some(dir) = common::shared_dir("oracle/cases", "the original's fin") else {
+        return;
+    };
+    let name = "YANG-DEMIN__myself_Citation_myself_clean";
+    let deck = datcom::read_deck(&common::text(&dir.join(name).join("input.dcm")), name)
+        .with_original_rules();
+    let case = &deck.cases[0];
+    let alpha = &case.flight.as_ref().expect("flight conditions").alpha_deg;
+    const FT: f64 = 0.3048;
+    let per_deg = |c: f64| c.to_radians();
+    let terms = |c: &Case, fin: Fin| {
+        let lat = fin_lateral(c, 0, alpha, fin).expect("fin terms");
+        let arms = lat.fin_terms.as_ref().expect("arms");
+        let cyb = lat.cyb.first().copied().flatten().expect("CYβ");
+        (per_deg(cyb), arms.arm_x / FT, arms.arm_z / FT)
+    };
+    let near = |ours: f64, traced: f64, what: &str| {
+        assert!(
+            (ours - traced).abs() <= 2e-5 * traced.abs(),
+            "{what}: ours {ours}, the original's {traced}"
+        );
+    };
+    let tail = terms(case, Fin::VerticalTail);
+    near(tail.0, -5.82819e-3, "vertical tail CYβ");
+    near(tail.1, 18.76402, "vertical tail l");
+    near(tail.2, 6.96542, "vertical tail z");
+    let mut swept = case.clone();
+    let fin = swept.ventral_fin.as_mut().expect("a ventral fin");
+    assert_eq!(fin.savsi_deg, Some(80.0));
+    fin.savsi_deg = case
+        .vertical_tail
+        .as_ref()
+        .expect("a vertical tail")
+        .savsi_deg;
+    let original = terms(&swept, Fin::VentralFin);
+    near(original.0, -2.18830e-4, "fin CYβ, the tail's sweep");
+    near(original.1, 8.55133, "fin l, the tail's sweep");
+    near(original.2, -11.29667, "fin z, the tail's sweep");
+    let ours = terms(case, Fin::VentralFin);
+    near(ours.0, -2.05434e-4, "fin CYβ, its own sweep");
+    near(ours.1, 12.41465, "fin l, its own sweep");
+    near(ours.2, -11.29667, "fin z, its own sweep");
 }
 
 /// CYr (an extension) is the side force whose moments are the panel's Cnr and Clr: worked
