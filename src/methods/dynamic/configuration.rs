@@ -61,8 +61,9 @@ pub fn wing_body_dynamic(wing: &Dynamic, body: &Dynamic, wing_body: &WingBody) -
 /// side force whose moments about the reference centre are those Cnr and Clr. The pitch-rate
 /// columns have no method of their own.
 ///
-/// For the ventral fin the original writes CYp with (2Z − z) and takes the vertical tail's
-/// CYβ in Cnr and Clp; we use the fin's own terms (docs/dynamic.md).
+/// For the ventral fin the original writes CYp with (2Z − z), takes the vertical tail's CYβ in
+/// Cnr and Clp, and computes the fin's planform (its MAC, hence l, and its CYβ) with the
+/// vertical tail's sweep angles; we use the fin's own planform and terms (docs/dynamic.md).
 pub fn fin_dynamic(
     case: &Case,
     condition_index: usize,
