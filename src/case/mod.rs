@@ -35,16 +35,27 @@ impl<'a> Nl<'a> {
         schema::namelist(self.name).and_then(|s| s.var(var))
     }
 
-    fn to_si(&self, var: &str, x: f64) -> f64 {
-        let Some(spec) = self.spec(var) else {
-            return x;
-        };
+    /// How `var` converts to SI: its dimension and SCALE factor; none for a variable the schema
+    /// does not know (kept as given).
+    fn conversion(&self, var: &str) -> Option<(Dimension, f64)> {
+        let spec = self.spec(var)?;
         let scale = match spec.dimension {
             Dimension::Length if spec.scaled => self.scale,
             Dimension::Area if spec.scaled => self.scale * self.scale,
             _ => 1.0,
         };
-        units::to_si(x, self.dim, spec.dimension) * scale
+        Some((spec.dimension, scale))
+    }
+
+    fn convert(&self, conversion: Option<(Dimension, f64)>, x: f64) -> f64 {
+        match conversion {
+            Some((dimension, scale)) => units::to_si(x, self.dim, dimension) * scale,
+            None => x,
+        }
+    }
+
+    fn to_si(&self, var: &str, x: f64) -> f64 {
+        self.convert(self.conversion(var), x)
     }
 
     fn raw(&self, var: &str) -> Option<&'a Value> {
@@ -62,9 +73,10 @@ impl<'a> Nl<'a> {
         self.raw(var)
             .and_then(Value::numbers)
             .map(|v| {
+                let conversion = self.conversion(var);
                 v.iter()
                     .map_while(|x| *x)
-                    .map(|x| self.to_si(var, x))
+                    .map(|x| self.convert(conversion, x))
                     .collect()
             })
             .unwrap_or_default()
