@@ -23,7 +23,8 @@ pub use crate::methods::wing::ZeroLiftReading;
 
 /// Accessor over one namelist's values that converts to SI.
 struct Nl<'a> {
-    name: &'a str,
+    /// The namelist's schema (looked up once, not for every variable read).
+    spec: Option<&'static schema::NamelistSpec>,
     values: Option<&'a NamelistValues>,
     dim: Dim,
     /// SYNTHS SCALE, applied to the variables the schema marks as scaled geometry.
@@ -32,7 +33,7 @@ struct Nl<'a> {
 
 impl<'a> Nl<'a> {
     fn spec(&self, var: &str) -> Option<&'static schema::VarSpec> {
-        schema::namelist(self.name).and_then(|s| s.var(var))
+        self.spec.and_then(|s| s.var(var))
     }
 
     /// How `var` converts to SI: its dimension and SCALE factor; none for a variable the schema
@@ -697,7 +698,7 @@ impl Case {
             .filter(|s| *s > 0.0)
             .unwrap_or(1.0);
         let nl = |name: &'static str| Nl {
-            name,
+            spec: schema::namelist(name),
             values: raw.namelists.get(name),
             dim,
             scale,
