@@ -179,6 +179,13 @@ fn token(i: &str) -> IResult<&str, Tok> {
     }
 }
 
+/// A capacity for the tokens of `text` that most lines do not outgrow (values and their commas
+/// take two or three characters a token at the least), so that lexing a line does not grow its
+/// token list step by step.
+pub fn capacity_hint(text: &str) -> usize {
+    text.len() / 2 + 1
+}
+
 /// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.
 /// `first_column` is the 1-based column of the first character of `text`.
 pub fn lex_line(text: &str, line: usize, first_column: usize, out: &mut Vec<Token>) {

@@ -424,7 +424,7 @@ impl<'a> Reader<'a> {
             );
         }
         self.open = Some(open);
-        let mut toks = Vec::new();
+        let mut toks = Vec::with_capacity(lexer::capacity_hint(text));
         lexer::lex_line(text, n, 1, &mut toks);
         self.feed(toks);
     }
@@ -432,6 +432,9 @@ impl<'a> Reader<'a> {
     /// Reads the tokens of a line: into the open namelist until `$` closes it; after that, a
     /// `$NAME` opens the next one, and anything else on the line is stray.
     fn feed(&mut self, toks: Vec<Token>) {
+        if let Some(open) = &mut self.open {
+            open.tokens.reserve(toks.len());
+        }
         let mut stray: Vec<Token> = Vec::new();
         for t in toks {
             match self.open.take() {
@@ -531,7 +534,7 @@ impl<'a> Reader<'a> {
         let trimmed = text.trim();
         let col = column_of(text, text.len() - text.trim_start().len());
         if trimmed.starts_with(['$', '&']) {
-            let mut toks = Vec::new();
+            let mut toks = Vec::with_capacity(lexer::capacity_hint(text));
             lexer::lex_line(text, n, 1, &mut toks);
             // `$ NAME`: a blank between `$` and a namelist's name.
             if let (Some(Tok::Close), Some(Tok::Name(name))) =
@@ -904,6 +907,11 @@ impl<'a> Reader<'a> {
                     Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
                 }),
         };
+        // The elements written reach index `end` at most: room for them at once.
+        match &mut *entry {
+            Value::Numbers(v) => v.reserve(end.saturating_sub(v.len())),
+            Value::Logicals(v) => v.reserve(end.saturating_sub(v.len())),
+        }
         for (k, lit) in a
             .values
             .iter()
