@@ -23,7 +23,8 @@ pub use crate::methods::wing::ZeroLiftReading;
 
 /// Accessor over one namelist's values that converts to SI.
 struct Nl<'a> {
-    name: &'a str,
+    /// The namelist's schema (looked up once, not for every variable read).
+    spec: Option<&'static schema::NamelistSpec>,
     values: Option<&'a NamelistValues>,
     dim: Dim,
     /// SYNTHS SCALE, applied to the variables the schema marks as scaled geometry.
@@ -32,19 +33,30 @@ struct Nl<'a> {
 
 impl<'a> Nl<'a> {
     fn spec(&self, var: &str) -> Option<&'static schema::VarSpec> {
-        schema::namelist(self.name).and_then(|s| s.var(var))
+        self.spec.and_then(|s| s.var(var))
     }
 
-    fn to_si(&self, var: &str, x: f64) -> f64 {
-        let Some(spec) = self.spec(var) else {
-            return x;
-        };
+    /// How `var` converts to SI: its dimension and SCALE factor; none for a variable the schema
+    /// does not know (kept as given).
+    fn conversion(&self, var: &str) -> Option<(Dimension, f64)> {
+        let spec = self.spec(var)?;
         let scale = match spec.dimension {
             Dimension::Length if spec.scaled => self.scale,
             Dimension::Area if spec.scaled => self.scale * self.scale,
             _ => 1.0,
         };
-        units::to_si(x, self.dim, spec.dimension) * scale
+        Some((spec.dimension, scale))
+    }
+
+    fn convert(&self, conversion: Option<(Dimension, f64)>, x: f64) -> f64 {
+        match conversion {
+            Some((dimension, scale)) => units::to_si(x, self.dim, dimension) * scale,
+            None => x,
+        }
+    }
+
+    fn to_si(&self, var: &str, x: f64) -> f64 {
+        self.convert(self.conversion(var), x)
     }
 
     fn raw(&self, var: &str) -> Option<&'a Value> {
@@ -62,9 +74,10 @@ impl<'a> Nl<'a> {
         self.raw(var)
             .and_then(Value::numbers)
             .map(|v| {
+                let conversion = self.conversion(var);
                 v.iter()
                     .map_while(|x| *x)
-                    .map(|x| self.to_si(var, x))
+                    .map(|x| self.convert(conversion, x))
                     .collect()
             })
             .unwrap_or_default()
@@ -685,7 +698,7 @@ impl Case {
             .filter(|s| *s > 0.0)
             .unwrap_or(1.0);
         let nl = |name: &'static str| Nl {
-            name,
+            spec: schema::namelist(name),
             values: raw.namelists.get(name),
             dim,
             scale,

@@ -84,11 +84,11 @@ impl Walk<'_> {
         let policy = if below { axis.below } else { axis.above };
         self.warn(axis, a, x, policy);
         // End nodes, nearest first.
-        let end: Vec<usize> = if below {
-            (0..n.min(3)).map(idx).collect()
-        } else {
-            (0..n.min(3)).map(|k| idx(n - 1 - k)).collect()
-        };
+        let mut end_nodes = [0; 3];
+        for (k, e) in end_nodes.iter_mut().enumerate().take(n) {
+            *e = if below { idx(k) } else { idx(n - 1 - k) };
+        }
+        let end = &end_nodes[..n.min(3)];
         match policy {
             Outside::Refuse => None,
             Outside::Clamp => self.eval(&nodes[end[0]], depth + 1, args),

@@ -17,6 +17,7 @@ mod parse;
 
 use std::collections::{BTreeMap, HashMap};
 use std::fmt;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
 use serde::Serialize;
@@ -145,10 +146,35 @@ fn registry() -> &'static Registry {
     })
 }
 
+/// FNV-1a, the hash of the chart index: chart ids are short strings fixed at build time, so
+/// the standard hasher's protection against chosen keys buys nothing and costs several times
+/// more per lookup.
+struct IdHasher(u64);
+
+impl Default for IdHasher {
+    fn default() -> Self {
+        IdHasher(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.0 = (self.0 ^ u64::from(*b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+}
+
+type Index = HashMap<&'static str, &'static Chart, BuildHasherDefault<IdHasher>>;
+
 /// The charts by id, for the lookups of every method call: hashing a short id is cheaper than
 /// the string comparisons of a tree search among ids that share long prefixes.
-fn index() -> &'static HashMap<&'static str, &'static Chart> {
-    static INDEX: OnceLock<HashMap<&'static str, &'static Chart>> = OnceLock::new();
+fn index() -> &'static Index {
+    static INDEX: OnceLock<Index> = OnceLock::new();
     INDEX.get_or_init(|| {
         registry()
             .charts

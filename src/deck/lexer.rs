@@ -132,13 +132,15 @@ fn mantissa(i: &str) -> IResult<&str, &str> {
 fn number(i: &str) -> IResult<&str, Tok> {
     let (rest, text) = recognize(tuple((opt(one_of("+-")), mantissa, opt(exponent))))(i)?;
     let integer = !text.contains(['.', 'e', 'E', 'd', 'D']);
-    let normalised: String = text
-        .chars()
-        .map(|c| if c == 'd' || c == 'D' { 'E' } else { c })
-        .collect();
-    // `recognize` above accepts only digits, one dot, sign and exponent, which f64 parses; a
-    // number beyond the f64 range becomes infinite and the parser reports it.
-    let value = normalised.parse::<f64>().unwrap_or(f64::INFINITY);
+    // `recognize` above accepts only digits, one dot, sign and exponent, which f64 parses once a
+    // Fortran `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the
+    // parser reports it.
+    let parsed = if text.contains(['d', 'D']) {
+        text.replace(['d', 'D'], "E").parse::<f64>()
+    } else {
+        text.parse::<f64>()
+    };
+    let value = parsed.unwrap_or(f64::INFINITY);
     Ok((
         rest,
         Tok::Number {
@@ -161,10 +163,27 @@ fn punct(i: &str) -> IResult<&str, Tok> {
     Ok((rest, t))
 }
 
+fn name_token(i: &str) -> IResult<&str, Tok> {
+    name(i).map(|(r, n)| (r, Tok::Name(n.to_ascii_uppercase())))
+}
+
+/// One lexeme. The first character decides which lexemes can start here (the same choice as
+/// trying open/close, logical, number, punctuation and name in turn, without the failed tries).
 fn token(i: &str) -> IResult<&str, Tok> {
-    alt((open_or_close, logical, number, punct, |i| {
-        name(i).map(|(r, n)| (r, Tok::Name(n.to_ascii_uppercase())))
-    }))(i)
+    match i.as_bytes().first() {
+        Some(b'$' | b'&') => open_or_close(i),
+        Some(b'.') => alt((logical, number))(i),
+        Some(b'0'..=b'9' | b'+' | b'-') => number(i),
+        Some(b'(' | b')' | b',' | b'=' | b'*') => punct(i),
+        _ => name_token(i),
+    }
+}
+
+/// A capacity for the tokens of `text` that most lines do not outgrow (values and their commas
+/// take two or three characters a token at the least), so that lexing a line does not grow its
+/// token list step by step.
+pub fn capacity_hint(text: &str) -> usize {
+    text.len() / 2 + 1
 }
 
 /// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.

@@ -324,8 +324,11 @@ impl<'a> Reader<'a> {
             self.note_dialect(n, first_col, "a DATCOM+ comment card");
             return;
         }
-        let is_caseid =
-            self.open.is_none() && trimmed_all.to_ascii_uppercase().starts_with("CASEID");
+        let is_caseid = self.open.is_none()
+            && trimmed_all
+                .as_bytes()
+                .get(..6)
+                .is_some_and(|w| w.eq_ignore_ascii_case(b"CASEID"));
         let (text, had_bang) = if is_caseid {
             (raw, false)
         } else {
@@ -350,7 +353,10 @@ impl<'a> Reader<'a> {
         if let Some(c) = raw.find('\t') {
             self.note_dialect(n, column_of(raw, c), "a TAB character");
         }
-        let past: String = text.chars().skip(CARD_COLUMNS).collect();
+        let past = text
+            .char_indices()
+            .nth(CARD_COLUMNS)
+            .map_or("", |(i, _)| &text[i..]);
         if !past.trim().is_empty() {
             let card = match (&self.open, is_caseid) {
                 (Some(o), _) => Some(o.name.clone()),
@@ -363,7 +369,7 @@ impl<'a> Reader<'a> {
                 card.as_deref(),
                 None,
                 DeckProblem::PastColumn80 {
-                    found: excerpt(&past),
+                    found: excerpt(past),
                 },
                 Some("break the card into lines of at most 80 columns".into()),
             );
@@ -418,7 +424,7 @@ impl<'a> Reader<'a> {
             );
         }
         self.open = Some(open);
-        let mut toks = Vec::new();
+        let mut toks = Vec::with_capacity(lexer::capacity_hint(text));
         lexer::lex_line(text, n, 1, &mut toks);
         self.feed(toks);
     }
@@ -426,6 +432,9 @@ impl<'a> Reader<'a> {
     /// Reads the tokens of a line: into the open namelist until `$` closes it; after that, a
     /// `$NAME` opens the next one, and anything else on the line is stray.
     fn feed(&mut self, toks: Vec<Token>) {
+        if let Some(open) = &mut self.open {
+            open.tokens.reserve(toks.len());
+        }
         let mut stray: Vec<Token> = Vec::new();
         for t in toks {
             match self.open.take() {
@@ -525,7 +534,7 @@ impl<'a> Reader<'a> {
         let trimmed = text.trim();
         let col = column_of(text, text.len() - text.trim_start().len());
         if trimmed.starts_with(['$', '&']) {
-            let mut toks = Vec::new();
+            let mut toks = Vec::with_capacity(lexer::capacity_hint(text));
             lexer::lex_line(text, n, 1, &mut toks);
             // `$ NAME`: a blank between `$` and a namelist's name.
             if let (Some(Tok::Close), Some(Tok::Name(name))) =
@@ -784,7 +793,11 @@ impl<'a> Reader<'a> {
                 p.hint,
             );
         }
-        self.case.namelists.entry(open.name.clone()).or_default();
+        if !self.case.namelists.contains_key(&open.name) {
+            self.case
+                .namelists
+                .insert(open.name.clone(), Default::default());
+        }
         for a in assignments {
             self.assign(&open.name, spec, &a);
         }
@@ -864,7 +877,10 @@ impl<'a> Reader<'a> {
             return;
         }
         let end = last.min(var.len);
-        let assigned = self.assigned.entry(name.to_string()).or_default();
+        let assigned = match self.assigned.get_mut(name) {
+            Some(a) => a,
+            None => self.assigned.entry(name.to_string()).or_default(),
+        };
         let reassigned = (start..=end).any(|i| !assigned.insert((var.name.as_str(), i)));
         if reassigned {
             self.diag(
@@ -878,13 +894,24 @@ impl<'a> Reader<'a> {
                 None,
             );
         }
-        let values = self.case.namelists.entry(name.to_string()).or_default();
-        let entry = values
-            .entry(var.name.clone())
-            .or_insert_with(|| match var.kind {
-                Kind::Logical => Value::Logicals(Vec::new()),
-                Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
-            });
+        let values = match self.case.namelists.get_mut(name) {
+            Some(v) => v,
+            None => self.case.namelists.entry(name.to_string()).or_default(),
+        };
+        let entry = match values.get_mut(&var.name) {
+            Some(e) => e,
+            None => values
+                .entry(var.name.clone())
+                .or_insert_with(|| match var.kind {
+                    Kind::Logical => Value::Logicals(Vec::new()),
+                    Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
+                }),
+        };
+        // The elements written reach index `end` at most: room for them at once.
+        match &mut *entry {
+            Value::Numbers(v) => v.reserve(end.saturating_sub(v.len())),
+            Value::Logicals(v) => v.reserve(end.saturating_sub(v.len())),
+        }
         for (k, lit) in a
             .values
             .iter()
@@ -909,9 +936,11 @@ impl<'a> Reader<'a> {
                 _ => {}
             }
         }
-        self.case
-            .origins
-            .insert(format!("{name}.{}", var.name), (a.line, a.column));
+        let mut key = String::with_capacity(name.len() + 1 + var.name.len());
+        key.push_str(name);
+        key.push('.');
+        key.push_str(&var.name);
+        self.case.origins.insert(key, (a.line, a.column));
     }
 
     /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...), in

@@ -164,7 +164,8 @@ const ALIASES: &[(&str, &str, &str)] = &[
 pub fn canonical<'a>(namelist: &str, var: &'a str) -> &'a str {
     ALIASES
         .iter()
-        .find(|(nl, alias, _)| *nl == namelist && *alias == var)
+        // The variable first: aliases are few and the namelists' names all six letters long.
+        .find(|(nl, alias, _)| *alias == var && *nl == namelist)
         .map_or(var, |(_, _, v)| v)
 }
 

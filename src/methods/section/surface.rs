@@ -3,7 +3,9 @@
 
 use serde::Serialize;
 
-use crate::case::{Case, Planform, SectionInput, SectionReynolds};
+use std::cell::RefCell;
+
+use crate::case::{Case, FiveDigitReading, Planform, SectionInput, SectionReynolds, SixAReading};
 use crate::deck::cards::{AirfoilCard, Surface};
 use crate::geometry::section::{
     user_defined, NacaSection, SectionCoordinates, SectionError, Thickness,
@@ -99,6 +101,50 @@ fn planform_of(case: &Case, surface: Surface) -> (Option<&Planform>, Span) {
 /// - Conditions: every flight condition of the case, with the Reynolds number per length of
 ///   the condition (given RNNUB, or from the atmosphere) times the exposed mean aerodynamic
 ///   chord. (The original uses RNNUB only, and 10⁶ without it.)
+/// The title, shape and warnings of the section a NACA card designates.
+type NacaShape = (String, SectionShape, Vec<String>);
+
+/// [`NacaShape`] of `card`: a pure function of the card and the readings, asked for by every
+/// method that reads the surface's section (a dozen times per case with tails); the last few
+/// are remembered per thread, keyed by the whole card and the readings compared exactly.
+fn naca_shape(
+    card: &AirfoilCard,
+    five_digit: FiveDigitReading,
+    six_a: SixAReading,
+) -> Result<NacaShape, SurfaceSectionError> {
+    type Entry = (
+        (AirfoilCard, FiveDigitReading, SixAReading),
+        Result<NacaShape, SurfaceSectionError>,
+    );
+    const REMEMBERED: usize = 8;
+    thread_local! {
+        static LAST: RefCell<Vec<Entry>> = const { RefCell::new(Vec::new()) };
+    }
+    let hit = LAST.with(|last| {
+        last.borrow()
+            .iter()
+            .find(|((c, f, x), _)| c == card && *f == five_digit && *x == six_a)
+            .map(|(_, out)| out.clone())
+    });
+    if let Some(out) = hit {
+        return out;
+    }
+    let out = NacaSection::from_card_with(card, five_digit, six_a)
+        .map_err(SurfaceSectionError::from)
+        .and_then(|s| {
+            let shape = SectionShape::from_naca(&s)?;
+            Ok((s.title, shape, s.warnings))
+        });
+    LAST.with(|last| {
+        let mut last = last.borrow_mut();
+        if last.len() == REMEMBERED {
+            let _evicted = last.remove(0);
+        }
+        last.push(((card.clone(), five_digit, six_a), out.clone()));
+    });
+    out
+}
+
 pub fn surface_section(
     case: &Case,
     surface: Surface,
@@ -120,11 +166,7 @@ pub fn surface_section(
                 let shape = SectionShape::from_coordinates(&c)?;
                 (c.title, shape, c.warnings)
             }
-            Source::Naca(card) => {
-                let s = NacaSection::from_card_with(card, case.five_digit, case.six_a)?;
-                let shape = SectionShape::from_naca(&s)?;
-                (s.title, shape, s.warnings)
-            }
+            Source::Naca(card) => naca_shape(card, case.five_digit, case.six_a)?,
         };
         shape.maximum_reading = case.section_maximum;
         let chord = planform(plan, span)?.exposed.mac;

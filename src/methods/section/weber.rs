@@ -17,6 +17,7 @@
 //! | S5 | z_c | slope dz_c/dx |
 
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 use super::interpolation::Ordinates;
 
@@ -84,40 +85,29 @@ pub(crate) enum Reading {
     Linear,
 }
 
-impl Terms {
-    /// The sums for a section of half thickness `thickness` and mean line `camber` with
-    /// leading-edge radius `rho` (fraction of chord). With n = N, p = (−1)^(μ−ν),
-    /// d = cos θμ − cos θν and s, c the sines and cosines, the weights of ordinate μ at point
-    /// ν ≠ μ are
-    ///
-    /// - S1: (p − 1)/n · 2 sin θμ/d²,
-    /// - S2: −2p sin θμ/(sin θν · d),
-    /// - S3: S1's weight + 2/n · (1 − p)/(sin θμ · d),
-    /// - S4: 2(p − 1)/(n sin θν) · (1 − cos θμ cos θν)/d² − 2((−1)^μ − 1)/(n sin θν (1 − cos θμ)),
-    /// - S5: −2p/d,
-    ///
-    /// and at μ = ν: n/sin θν (S1, S3), cos θν/sin²θν (S2),
-    /// n/sin θν − 2((−1)^ν − 1)/(n sin θν (1 − cos θν)) (S4), −cos θν/sin²θν (S5). Riegels'
-    /// leading-edge term adds ((−1)^ν − 1)/(n(1 + cos θν)) · √(ρ/2) to S3.
-    pub fn new(thickness: Ordinates, camber: Ordinates, reading: Reading, rho: f64) -> Terms {
+/// The weights of the five sums, which depend on the points only: `weights[ν][μ]` is the
+/// weight of ordinate μ in each sum at point ν, and `leading_edge[ν]` Riegels' factor
+/// ((−1)^ν − 1)/(n(1 + cos θν)) before √(ρ/2). Computed once per process.
+struct Weights {
+    grid: Grid,
+    weights: Box<[[[f64; 5]; POINTS]; POINTS]>,
+    leading_edge: [f64; POINTS],
+}
+
+fn weights() -> &'static Weights {
+    static WEIGHTS: OnceLock<Weights> = OnceLock::new();
+    WEIGHTS.get_or_init(|| {
         let grid = Grid::new();
-        let zt = grid.x.map(|x| match reading {
-            Reading::Smooth => thickness.smooth(x),
-            Reading::Linear => thickness.linear(x),
-        });
-        let zc = grid.x.map(|x| camber.smooth(x));
         let n = N as f64;
         let (c, s) = (&grid.cos, &grid.sin);
         // (−1)^μ − 1 for point index k (μ = k + 1).
         let odd = |k: usize| parity(k as isize + 1) - 1.0;
-        let riegels = (0.5 * rho).sqrt();
-        let mut sums = [[0.0; POINTS]; 5];
-        for v in 0..POINTS {
+        let mut weights = Box::new([[[0.0; 5]; POINTS]; POINTS]);
+        for (v, row) in weights.iter_mut().enumerate() {
             let (cv, sv) = (c[v], s[v]);
-            let mut acc = [0.0; 5];
-            for m in 0..POINTS {
+            for (m, w) in row.iter_mut().enumerate() {
                 let (cm, sm) = (c[m], s[m]);
-                let weights = if m == v {
+                *w = if m == v {
                     [
                         n / sv,
                         cv / (sv * sv),
@@ -138,12 +128,52 @@ impl Terms {
                         -2.0 * p / d,
                     ]
                 };
+            }
+        }
+        let leading_edge = std::array::from_fn(|v| odd(v) / (n * (1.0 + c[v])));
+        Weights {
+            grid,
+            weights,
+            leading_edge,
+        }
+    })
+}
+
+impl Terms {
+    /// The sums for a section of half thickness `thickness` and mean line `camber` with
+    /// leading-edge radius `rho` (fraction of chord). With n = N, p = (−1)^(μ−ν),
+    /// d = cos θμ − cos θν and s, c the sines and cosines, the weights of ordinate μ at point
+    /// ν ≠ μ are
+    ///
+    /// - S1: (p − 1)/n · 2 sin θμ/d²,
+    /// - S2: −2p sin θμ/(sin θν · d),
+    /// - S3: S1's weight + 2/n · (1 − p)/(sin θμ · d),
+    /// - S4: 2(p − 1)/(n sin θν) · (1 − cos θμ cos θν)/d² − 2((−1)^μ − 1)/(n sin θν (1 − cos θμ)),
+    /// - S5: −2p/d,
+    ///
+    /// and at μ = ν: n/sin θν (S1, S3), cos θν/sin²θν (S2),
+    /// n/sin θν − 2((−1)^ν − 1)/(n sin θν (1 − cos θν)) (S4), −cos θν/sin²θν (S5). Riegels'
+    /// leading-edge term adds ((−1)^ν − 1)/(n(1 + cos θν)) · √(ρ/2) to S3. The weights depend
+    /// on the points only and are computed once ([`weights`]).
+    pub fn new(thickness: Ordinates, camber: Ordinates, reading: Reading, rho: f64) -> Terms {
+        let table = weights();
+        let grid = table.grid.clone();
+        let zt = grid.x.map(|x| match reading {
+            Reading::Smooth => thickness.smooth(x),
+            Reading::Linear => thickness.linear(x),
+        });
+        let zc = grid.x.map(|x| camber.smooth(x));
+        let riegels = (0.5 * rho).sqrt();
+        let mut sums = [[0.0; POINTS]; 5];
+        for (v, row) in table.weights.iter().enumerate() {
+            let mut acc = [0.0; 5];
+            for (m, weights) in row.iter().enumerate() {
                 let ordinates = [zt[m], zt[m], zt[m], zc[m], zc[m]];
                 for ((a, w), y) in acc.iter_mut().zip(weights).zip(ordinates) {
                     *a += w * y;
                 }
             }
-            acc[2] += odd(v) / (n * (1.0 + cv)) * riegels;
+            acc[2] += table.leading_edge[v] * riegels;
             for (sum, a) in sums.iter_mut().zip(acc) {
                 sum[v] = a;
             }
