@@ -88,19 +88,6 @@ fn planform_of(case: &Case, surface: Surface) -> (Option<&Planform>, Span) {
     }
 }
 
-/// The section inputs of `surface` in `case`; `None` when the surface has no planform, or
-/// neither user coordinates (xxSCHR TYPEIN) nor a NACA card (the original computes no section
-/// for it either).
-///
-/// - Section: the xxSCHR coordinates when TYPEIN is given, else the surface's (last) NACA card.
-/// - Leading-edge radius: the designation's; for user coordinates the surface's own LERI, or
-///   the nose circle. (The original takes the vertical tail's LERI for the ventral fin and
-///   none for the vertical tail.)
-/// - User slopes: the surface's CLALPA(i) (per degree in the deck) for conditions of Mach
-///   index i.
-/// - Conditions: every flight condition of the case, with the Reynolds number per length of
-///   the condition (given RNNUB, or from the atmosphere) times the exposed mean aerodynamic
-///   chord. (The original uses RNNUB only, and 10⁶ without it.)
 /// The title, shape and warnings of the section a NACA card designates.
 type NacaShape = (String, SectionShape, Vec<String>);
 
@@ -145,6 +132,19 @@ fn naca_shape(
     out
 }
 
+/// The section inputs of `surface` in `case`; `None` when the surface has no planform, or
+/// neither user coordinates (xxSCHR TYPEIN) nor a NACA card (the original computes no section
+/// for it either).
+///
+/// - Section: the xxSCHR coordinates when TYPEIN is given, else the surface's (last) NACA card.
+/// - Leading-edge radius: the designation's; for user coordinates the surface's own LERI, or
+///   the nose circle. (The original takes the vertical tail's LERI for the ventral fin and
+///   none for the vertical tail.)
+/// - User slopes: the surface's CLALPA(i) (per degree in the deck) for conditions of Mach
+///   index i.
+/// - Conditions: every flight condition of the case, with the Reynolds number per length of
+///   the condition (given RNNUB, or from the atmosphere) times the exposed mean aerodynamic
+///   chord. (The original uses RNNUB only, and 10⁶ without it.)
 pub fn surface_section(
     case: &Case,
     surface: Surface,
