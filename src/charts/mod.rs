@@ -169,24 +169,45 @@ impl Hasher for IdHasher {
     }
 }
 
-type Index = HashMap<&'static str, &'static Chart, BuildHasherDefault<IdHasher>>;
+type Index = HashMap<&'static str, usize, BuildHasherDefault<IdHasher>>;
 
-/// The charts by id, for the lookups of every method call: hashing a short id is cheaper than
-/// the string comparisons of a tree search among ids that share long prefixes.
+/// The chart files by the id they declare (build.rs reads it): a lookup parses only the file of
+/// the chart it needs, once per process, instead of every embedded chart.
 fn index() -> &'static Index {
     static INDEX: OnceLock<Index> = OnceLock::new();
     INDEX.get_or_init(|| {
-        registry()
-            .charts
+        CHART_IDS
             .iter()
-            .map(|(id, chart)| (id.as_str(), chart))
+            .enumerate()
+            .filter(|(_, id)| !id.is_empty())
+            .map(|(slot, id)| (*id, slot))
             .collect()
     })
 }
 
-/// The chart with this id (`4.1.3.2-49`, ...), when it is embedded and valid.
+/// The chart of file `slot`, parsed on first use; none when the file is not valid or does not
+/// hold the chart its id line names.
+fn parsed(slot: usize) -> Option<&'static Chart> {
+    static PARSED: OnceLock<Vec<OnceLock<Option<Chart>>>> = OnceLock::new();
+    let (file, text) = *CHART_FILES.get(slot)?;
+    PARSED
+        .get_or_init(|| CHART_FILES.iter().map(|_| OnceLock::new()).collect())
+        .get(slot)?
+        .get_or_init(|| {
+            parse_chart(text, file)
+                .ok()
+                .filter(|c| CHART_IDS.get(slot) == Some(&c.id.as_str()))
+        })
+        .as_ref()
+}
+
+/// The chart with this id (`4.1.3.2-49`, ...), when it is embedded and valid. A file whose id
+/// line is not what its parsed chart says falls back on the registry of every chart.
 pub fn get(id: &str) -> Option<&'static Chart> {
-    index().get(id).copied()
+    index()
+        .get(id)
+        .and_then(|&slot| parsed(slot))
+        .or_else(|| registry().charts.get(id))
 }
 
 /// Every valid embedded chart.
