@@ -871,33 +871,10 @@ fn alpha_dot_terms_follow_the_listed_downwash_gradient() {
     assert!(differed > 0 && checked > 0);
 }
 
-/// The (ALPHA, D(EPSLON)/D(ALPHA)) rows of the one downwash table of a listing.
+/// The (ALPHA, D(EPSLON)/D(ALPHA)) rows of the first downwash table of a listing.
 fn listed_downwash_gradient(listing: &str) -> Vec<(f64, f64)> {
-    let mut rows = Vec::new();
-    let mut inside = false;
-    for line in listing.lines() {
-        if line.contains("D(EPSLON)/D(ALPHA)") {
-            inside = true;
-            continue;
-        }
-        if !inside {
-            continue;
-        }
-        let t = line.trim();
-        if t == "0" || t.is_empty() {
-            if rows.is_empty() {
-                continue;
-            }
-            break;
-        }
-        let v: Vec<f64> = t
-            .split_whitespace()
-            .filter_map(|s| s.parse().ok())
-            .collect();
-        if v.len() != 4 {
-            break;
-        }
-        rows.push((v[0], v[3]));
-    }
-    rows
+    common::downwash_tables(listing)
+        .first()
+        .map(|t| t.rows.iter().filter_map(|r| Some((r[0]?, r[3]?))).collect())
+        .unwrap_or_default()
 }

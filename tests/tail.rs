@@ -229,73 +229,6 @@ impl Tally {
     }
 }
 
-/// One downwash table: Mach of its page, the page's configuration, line of its header in the
-/// case's listing, rows (alpha, q/q∞, ε, dε/dα; none where not a number).
-struct DownwashTable {
-    mach: f64,
-    configuration: String,
-    line: usize,
-    rows: Vec<[Option<f64>; 4]>,
-}
-
-/// The downwash tables of a case's listing (the legacy importer does not read them).
-fn downwash_tables(listing: &str) -> Vec<DownwashTable> {
-    let lines: Vec<&str> = listing.lines().collect();
-    let mut out = Vec::new();
-    let mut mach = None;
-    let mut configuration = String::new();
-    let mut after_header = false;
-    let mut i = 0;
-    while i < lines.len() {
-        let line = lines[i];
-        if line.contains("CHARACTERISTICS AT ANGLE OF ATTACK") {
-            configuration = lines.get(i + 1).map_or("", |s| s.trim()).to_string();
-        }
-        if line.contains("FLIGHT CONDITIONS") {
-            after_header = true;
-        } else if after_header && line.starts_with('0') {
-            mach = line.get(1..8).and_then(|s| s.trim().parse::<f64>().ok());
-            after_header = false;
-        }
-        if line.contains("D(EPSLON)/D(ALPHA)") {
-            let header = i + 1;
-            let mut rows = Vec::new();
-            i += 1;
-            while i < lines.len() {
-                let t = lines[i].trim();
-                if t == "0" || t.is_empty() {
-                    if !rows.is_empty() {
-                        break;
-                    }
-                    i += 1;
-                    continue;
-                }
-                let tokens: Vec<&str> = t.split_whitespace().collect();
-                if tokens.len() != 4 || tokens[0].parse::<f64>().is_err() {
-                    break;
-                }
-                let mut r = [None; 4];
-                for (k, tok) in tokens.iter().enumerate() {
-                    r[k] = tok.parse::<f64>().ok();
-                }
-                rows.push(r);
-                i += 1;
-            }
-            if let Some(m) = mach {
-                out.push(DownwashTable {
-                    mach: m,
-                    configuration: configuration.clone(),
-                    line: header,
-                    rows,
-                });
-            }
-            continue;
-        }
-        i += 1;
-    }
-    out
-}
-
 /// Decks whose wing inputs are complete: the section's CLMAX given, CLMAXL given or no
 /// airfoil card (the low-speed CLmax then comes from the original's MAXCL), and no
 /// experimental data.
@@ -479,7 +412,7 @@ fn run_oracle(decks: &[(String, Deck, String)], rule: SectionReynolds, tally: &m
             }
             let mut from = 0;
             let mut last_mach = f64::NAN;
-            for t in downwash_tables(listing) {
+            for t in common::downwash_tables(listing) {
                 if t.mach != last_mach {
                     from = condition_at(case, t.mach, from).map_or(from, |k| k);
                     last_mach = t.mach;

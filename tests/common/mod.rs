@@ -131,3 +131,70 @@ pub fn under_rule(
         other => deck.with_section_reynolds(other),
     }
 }
+
+/// One downwash table: Mach of its page, the page's configuration, line of its header in the
+/// case's listing, rows (alpha, q/q∞, ε, dε/dα; none where not a number).
+pub struct DownwashTable {
+    pub mach: f64,
+    pub configuration: String,
+    pub line: usize,
+    pub rows: Vec<[Option<f64>; 4]>,
+}
+
+/// The downwash tables of a case's listing (the legacy importer does not read them).
+pub fn downwash_tables(listing: &str) -> Vec<DownwashTable> {
+    let lines: Vec<&str> = listing.lines().collect();
+    let mut out = Vec::new();
+    let mut mach = None;
+    let mut configuration = String::new();
+    let mut after_header = false;
+    let mut i = 0;
+    while i < lines.len() {
+        let line = lines[i];
+        if line.contains("CHARACTERISTICS AT ANGLE OF ATTACK") {
+            configuration = lines.get(i + 1).map_or("", |s| s.trim()).to_string();
+        }
+        if line.contains("FLIGHT CONDITIONS") {
+            after_header = true;
+        } else if after_header && line.starts_with('0') {
+            mach = line.get(1..8).and_then(|s| s.trim().parse::<f64>().ok());
+            after_header = false;
+        }
+        if line.contains("D(EPSLON)/D(ALPHA)") {
+            let header = i + 1;
+            let mut rows = Vec::new();
+            i += 1;
+            while i < lines.len() {
+                let t = lines[i].trim();
+                if t == "0" || t.is_empty() {
+                    if !rows.is_empty() {
+                        break;
+                    }
+                    i += 1;
+                    continue;
+                }
+                let tokens: Vec<&str> = t.split_whitespace().collect();
+                if tokens.len() != 4 || tokens[0].parse::<f64>().is_err() {
+                    break;
+                }
+                let mut r = [None; 4];
+                for (k, tok) in tokens.iter().enumerate() {
+                    r[k] = tok.parse::<f64>().ok();
+                }
+                rows.push(r);
+                i += 1;
+            }
+            if let Some(m) = mach {
+                out.push(DownwashTable {
+                    mach: m,
+                    configuration: configuration.clone(),
+                    line: header,
+                    rows,
+                });
+            }
+            continue;
+        }
+        i += 1;
+    }
+    out
+}
