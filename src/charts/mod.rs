@@ -97,6 +97,24 @@ pub struct Chart {
     pub file: String,
 }
 
+impl Chart {
+    /// The nodes of axis `depth` (0 the outermost) of a grid chart, read along its first
+    /// branch; `None` past the innermost axis.
+    pub fn axis_nodes(&self, depth: usize) -> Option<&[f64]> {
+        let mut node = &self.data;
+        for _ in 0..depth {
+            match node {
+                Node::Table { nodes, .. } => node = nodes.first()?,
+                Node::Value(_) => return None,
+            }
+        }
+        match node {
+            Node::Table { x, .. } => Some(x),
+            Node::Value(_) => None,
+        }
+    }
+}
+
 /// A lookup left the data of a chart.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChartWarning {

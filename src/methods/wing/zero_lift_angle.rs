@@ -21,10 +21,8 @@ pub enum ZeroLiftReading {
     Original,
 }
 
-/// Nodes of figure 4.1.3.1-4's taper ratio and aspect ratio, and the distance within which
-/// the original takes a node's curve without interpolating (CALCA0).
-const TWIST_TAPER_NODES: [f64; 3] = [0.0, 0.5, 1.0];
-const TWIST_ASPECT_NODES: [f64; 4] = [1.5, 3.5, 6.0, 10.0];
+/// The distance within which the original's CALCA0 takes a node's curve of figure 4.1.3.1-4
+/// without interpolating (its own bracketing, not the chart's GLOOK tolerance).
 const ORIGINAL_NODE_SNAP: f64 = 0.02;
 
 /// Where `x` lies among `nodes` as the original's CALCA0 brackets it: `(upper, fraction)` with
@@ -59,25 +57,35 @@ pub fn twist_term_as_the_original(
     sweep_deg: f64,
     warnings: &mut Vec<WingWarning>,
 ) -> Result<f64, WingMethodError> {
-    let (t_upper, t_fraction) = original_bracket(taper, &TWIST_TAPER_NODES);
-    let (a_upper, a_fraction) = original_bracket(aspect_ratio, &TWIST_ASPECT_NODES);
+    // The chart's taper-ratio and aspect-ratio nodes (its outer two axes).
+    let chart = crate::charts::get(TWIST_ZERO_LIFT_ANGLE);
+    let (Some(taper_nodes), Some(aspect_nodes)) = (
+        chart.and_then(|c| c.axis_nodes(0)),
+        chart.and_then(|c| c.axis_nodes(1)),
+    ) else {
+        // No chart: the linear reading reports it.
+        return figures::read(
+            TWIST_ZERO_LIFT_ANGLE,
+            &[taper, aspect_ratio, sweep_deg],
+            warnings,
+        );
+    };
+    let (t_upper, t_fraction) = original_bracket(taper, taper_nodes);
+    let (a_upper, a_fraction) = original_bracket(aspect_ratio, aspect_nodes);
     // The aspect ratio read on a taper curve, from the pair of nodes ending at `upper`.
     let on_pair = |upper: usize| match a_fraction {
-        Some(f) => {
-            TWIST_ASPECT_NODES[upper - 1]
-                + f * (TWIST_ASPECT_NODES[upper] - TWIST_ASPECT_NODES[upper - 1])
-        }
-        None => TWIST_ASPECT_NODES[upper],
+        Some(f) => aspect_nodes[upper - 1] + f * (aspect_nodes[upper] - aspect_nodes[upper - 1]),
+        None => aspect_nodes[upper],
     };
     let mut curve =
         |t: f64, a: f64| figures::read(TWIST_ZERO_LIFT_ANGLE, &[t, a, sweep_deg], warnings);
-    let upper = curve(TWIST_TAPER_NODES[t_upper], on_pair(a_upper))?;
+    let upper = curve(taper_nodes[t_upper], on_pair(a_upper))?;
     let Some(f) = t_fraction else {
         return Ok(upper);
     };
-    let last = TWIST_ASPECT_NODES.len() - 1;
+    let last = aspect_nodes.len() - 1;
     let lower_pair = if a_upper == last { last - 1 } else { a_upper };
-    let lower = curve(TWIST_TAPER_NODES[t_upper - 1], on_pair(lower_pair))?;
+    let lower = curve(taper_nodes[t_upper - 1], on_pair(lower_pair))?;
     Ok(lower + f * (upper - lower))
 }
 
