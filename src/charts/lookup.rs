@@ -103,6 +103,15 @@ impl Walk<'_> {
         }
     }
 
+    /// A node's value: a leaf's directly, a table's by the walk.
+    #[inline(always)]
+    fn child(&mut self, node: &Node, depth: usize, args: &[f64]) -> Option<f64> {
+        match node {
+            Node::Value(v) => Some(*v),
+            Node::Table { .. } => self.eval(node, depth, args),
+        }
+    }
+
     fn eval(&mut self, node: &Node, depth: usize, args: &[f64]) -> Option<f64> {
         let (x, nodes) = match node {
             Node::Value(v) => return Some(*v),
@@ -111,7 +120,7 @@ impl Walk<'_> {
         let a = args[depth];
         let (lower, snapped) = locate(x, a, self.chart.node_tolerance);
         if let Some(i) = snapped {
-            return self.eval(&nodes[i], depth + 1, args);
+            return self.child(&nodes[i], depth + 1, args);
         }
         let n = x.len();
         let ascending = x[n - 1] > x[0];
@@ -121,8 +130,8 @@ impl Walk<'_> {
             // Strictly inside (a node equal to an end would have snapped unless a is beyond it).
             let (i, j) = (idx(lower - 1), idx(lower));
             if a > x[idx(0)] && a < x[idx(n - 1)] {
-                let y0 = self.eval(&nodes[i], depth + 1, args)?;
-                let y1 = self.eval(&nodes[j], depth + 1, args)?;
+                let y0 = self.child(&nodes[i], depth + 1, args)?;
+                let y1 = self.child(&nodes[j], depth + 1, args)?;
                 return Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0));
             }
         }
@@ -138,18 +147,18 @@ impl Walk<'_> {
         let end = &end_nodes[..n.min(3)];
         match policy {
             Outside::Refuse => None,
-            Outside::Clamp => self.eval(&nodes[end[0]], depth + 1, args),
+            Outside::Clamp => self.child(&nodes[end[0]], depth + 1, args),
             Outside::Quadratic if end.len() == 3 => {
                 let mut y = [0.0; 3];
                 for (k, &i) in end.iter().enumerate() {
-                    y[k] = self.eval(&nodes[i], depth + 1, args)?;
+                    y[k] = self.child(&nodes[i], depth + 1, args)?;
                 }
                 Some(quadratic([x[end[0]], x[end[1]], x[end[2]]], y, a))
             }
             Outside::Linear | Outside::Quadratic => {
                 let (i, j) = (end[0], end[1]);
-                let y0 = self.eval(&nodes[i], depth + 1, args)?;
-                let y1 = self.eval(&nodes[j], depth + 1, args)?;
+                let y0 = self.child(&nodes[i], depth + 1, args)?;
+                let y1 = self.child(&nodes[j], depth + 1, args)?;
                 Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0))
             }
         }
