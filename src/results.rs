@@ -1045,8 +1045,12 @@ pub fn run_case(case: &Case) -> CaseResults {
         }
     }
     // The same warning from several configurations of a condition is said once.
-    let mut seen = std::collections::BTreeSet::new();
-    warnings.retain(|w| seen.insert(w.clone()));
+    let first: Vec<bool> = {
+        let mut seen = std::collections::BTreeSet::new();
+        warnings.iter().map(|w| seen.insert(w.as_str())).collect()
+    };
+    let mut first = first.into_iter();
+    warnings.retain(|_| first.next().unwrap_or(true));
     CaseResults {
         number: case.number,
         caseid: case.caseid.clone(),

@@ -10,19 +10,58 @@ pub struct Lookup {
     pub warnings: Vec<ChartWarning>,
 }
 
-/// Index of the node a query snaps to (the original's GLOOK: relative distance below `tol`,
-/// relative to the query, or to the node when the query is 0, or absolute near zero).
-fn snap(x: &[f64], a: f64, tol: f64) -> Option<usize> {
+/// Whether a query `a` snaps to node `xi` (the original's GLOOK: relative distance below
+/// `tol`, relative to the query, or to the node when the query is 0, or absolute near zero;
+/// `tol = 0`: equal only).
+fn snaps(xi: f64, a: f64, tol: f64) -> bool {
     if tol == 0.0 {
-        return x.iter().position(|v| *v == a);
+        return xi == a;
     }
-    x.iter().position(|&xi| {
-        let mut scale = if a == 0.0 { xi } else { a };
-        if scale.abs() <= 1e-4 {
-            scale = 1.0;
+    let mut scale = if a == 0.0 { xi } else { a };
+    if scale.abs() <= 1e-4 {
+        scale = 1.0;
+    }
+    ((a - xi) / scale).abs() < tol
+}
+
+/// Where a query falls on an axis `x` (strictly monotone, finite): `lower` nodes come before it
+/// in increasing x (`x` ascending: indices `0..lower`; descending: `n - lower..n`), and the
+/// index of the node it snaps to, the first in `x`'s order.
+///
+/// The nodes a query snaps to are the nodes of an interval of x around the query (the
+/// relative distance grows monotonically with the distance on each side, also as rounded),
+/// so when there are any, a node next to the query is one of them and the first is found by
+/// walking back from it: the same node as a scan of every node from the first.
+fn locate(x: &[f64], a: f64, tol: f64) -> (usize, Option<usize>) {
+    let n = x.len();
+    let ascending = x[n - 1] > x[0];
+    // Count of nodes below the query, and the storage index of the nearest below and above.
+    let (lower, below, above) = if ascending {
+        let p = x.partition_point(|&v| v < a);
+        (p, p.checked_sub(1), (p < n).then_some(p))
+    } else {
+        let p = x.partition_point(|&v| v >= a);
+        // Storage 0..p are at or above the query, p..n below.
+        (n - p, (p < n).then_some(p), p.checked_sub(1))
+    };
+    // The first matching node in storage order: walk to lower indices from a match.
+    let first_from = |mut i: usize| {
+        while i > 0 && snaps(x[i - 1], a, tol) {
+            i -= 1;
         }
-        ((a - xi) / scale).abs() < tol
-    })
+        i
+    };
+    let (first, second) = if ascending {
+        (below, above)
+    } else {
+        (above, below)
+    };
+    let snapped = match (first, second) {
+        (Some(i), _) if snaps(x[i], a, tol) => Some(first_from(i)),
+        (_, Some(j)) if snaps(x[j], a, tol) => Some(j),
+        _ => None,
+    };
+    (lower, snapped)
 }
 
 /// The parabola through three points, at `a` (the original's QUAD).
@@ -45,16 +84,31 @@ impl Walk<'_> {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
                 (lo.min(*v), hi.max(*v))
             });
-        let w = ChartWarning {
-            chart: self.chart.id.clone(),
-            variable: axis.symbol.clone(),
-            value,
-            min,
-            max,
-            action,
-        };
-        if !self.warnings.contains(&w) {
-            self.warnings.push(w);
+        let seen = self.warnings.iter().any(|w| {
+            w.variable == axis.shared_symbol
+                && w.value == value
+                && w.min == min
+                && w.max == max
+                && w.action == action
+        });
+        if !seen {
+            self.warnings.push(ChartWarning {
+                chart: self.chart.shared_id.clone(),
+                variable: axis.shared_symbol.clone(),
+                value,
+                min,
+                max,
+                action,
+            });
+        }
+    }
+
+    /// A node's value: a leaf's directly, a table's by the walk.
+    #[inline(always)]
+    fn child(&mut self, node: &Node, depth: usize, args: &[f64]) -> Option<f64> {
+        match node {
+            Node::Value(v) => Some(*v),
+            Node::Table { .. } => self.eval(node, depth, args),
         }
     }
 
@@ -64,23 +118,25 @@ impl Walk<'_> {
             Node::Table { x, nodes } => (x, nodes),
         };
         let a = args[depth];
-        let axis = &self.chart.axes[depth];
-        if let Some(i) = snap(x, a, self.chart.node_tolerance) {
-            return self.eval(&nodes[i], depth + 1, args);
+        let (lower, snapped) = locate(x, a, self.chart.node_tolerance);
+        if let Some(i) = snapped {
+            return self.child(&nodes[i], depth + 1, args);
         }
         let n = x.len();
         let ascending = x[n - 1] > x[0];
         // Node indices ordered by increasing x.
         let idx = |k: usize| if ascending { k } else { n - 1 - k };
-        let (lo, hi) = (x[idx(0)], x[idx(n - 1)]);
-        if a > lo && a < hi {
-            let k = (0..n - 1).find(|&k| a <= x[idx(k + 1)]).unwrap_or(n - 2);
-            let (i, j) = (idx(k), idx(k + 1));
-            let y0 = self.eval(&nodes[i], depth + 1, args)?;
-            let y1 = self.eval(&nodes[j], depth + 1, args)?;
-            return Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0));
+        if lower > 0 && lower < n {
+            // Strictly inside (a node equal to an end would have snapped unless a is beyond it).
+            let (i, j) = (idx(lower - 1), idx(lower));
+            if a > x[idx(0)] && a < x[idx(n - 1)] {
+                let y0 = self.child(&nodes[i], depth + 1, args)?;
+                let y1 = self.child(&nodes[j], depth + 1, args)?;
+                return Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0));
+            }
         }
-        let below = a <= lo;
+        let axis = &self.chart.axes[depth];
+        let below = a <= x[idx(0)];
         let policy = if below { axis.below } else { axis.above };
         self.warn(axis, a, x, policy);
         // End nodes, nearest first.
@@ -91,18 +147,18 @@ impl Walk<'_> {
         let end = &end_nodes[..n.min(3)];
         match policy {
             Outside::Refuse => None,
-            Outside::Clamp => self.eval(&nodes[end[0]], depth + 1, args),
+            Outside::Clamp => self.child(&nodes[end[0]], depth + 1, args),
             Outside::Quadratic if end.len() == 3 => {
                 let mut y = [0.0; 3];
                 for (k, &i) in end.iter().enumerate() {
-                    y[k] = self.eval(&nodes[i], depth + 1, args)?;
+                    y[k] = self.child(&nodes[i], depth + 1, args)?;
                 }
                 Some(quadratic([x[end[0]], x[end[1]], x[end[2]]], y, a))
             }
             Outside::Linear | Outside::Quadratic => {
                 let (i, j) = (end[0], end[1]);
-                let y0 = self.eval(&nodes[i], depth + 1, args)?;
-                let y1 = self.eval(&nodes[j], depth + 1, args)?;
+                let y0 = self.child(&nodes[i], depth + 1, args)?;
+                let y1 = self.child(&nodes[j], depth + 1, args)?;
                 Some(y0 + (a - x[i]) / (x[j] - x[i]) * (y1 - y0))
             }
         }
@@ -117,13 +173,14 @@ impl Chart {
             return Lookup {
                 value: None,
                 warnings: vec![ChartWarning {
-                    chart: self.id.clone(),
+                    chart: self.shared_id.clone(),
                     variable: self
                         .axes
                         .iter()
                         .map(|a| a.symbol.as_str())
                         .collect::<Vec<_>>()
-                        .join(","),
+                        .join(",")
+                        .into(),
                     value: args
                         .iter()
                         .copied()

@@ -15,10 +15,12 @@
 mod lookup;
 mod parse;
 
+use std::cell::Cell;
 use std::collections::{BTreeMap, HashMap};
 use std::fmt;
 use std::hash::{BuildHasherDefault, Hasher};
-use std::sync::OnceLock;
+use std::ops::Deref;
+use std::sync::{Arc, OnceLock};
 
 use serde::Serialize;
 
@@ -49,6 +51,9 @@ pub struct Axis {
     pub unit: String,
     pub below: Outside,
     pub above: Outside,
+    /// `symbol` shared with the warnings that name it.
+    #[serde(skip)]
+    pub(crate) shared_symbol: Name,
 }
 
 /// The dependent variable.
@@ -95,6 +100,9 @@ pub struct Chart {
     pub data: Node,
     /// Path of the file under charts/.
     pub file: String,
+    /// `id` shared with the warnings that name the chart.
+    #[serde(skip)]
+    pub(crate) shared_id: Name,
 }
 
 impl Chart {
@@ -115,11 +123,83 @@ impl Chart {
     }
 }
 
+/// A chart id or axis symbol as a warning holds it: shared with the chart, so that making,
+/// copying and comparing warnings allocates nothing. Reads as a `str`.
+#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Name(Arc<str>);
+
+impl Name {
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl Default for Name {
+    fn default() -> Self {
+        Name(Arc::from(""))
+    }
+}
+
+impl Deref for Name {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl From<&str> for Name {
+    fn from(s: &str) -> Self {
+        Name(Arc::from(s))
+    }
+}
+
+impl From<String> for Name {
+    fn from(s: String) -> Self {
+        Name(Arc::from(s))
+    }
+}
+
+impl PartialEq<str> for Name {
+    fn eq(&self, other: &str) -> bool {
+        *self.0 == *other
+    }
+}
+
+impl PartialEq<&str> for Name {
+    fn eq(&self, other: &&str) -> bool {
+        *self.0 == **other
+    }
+}
+
+impl PartialEq<String> for Name {
+    fn eq(&self, other: &String) -> bool {
+        *self.0 == **other
+    }
+}
+
+impl fmt::Debug for Name {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(&*self.0, f)
+    }
+}
+
+impl fmt::Display for Name {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&*self.0, f)
+    }
+}
+
+impl Serialize for Name {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.0)
+    }
+}
+
 /// A lookup left the data of a chart.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChartWarning {
-    pub chart: String,
-    pub variable: String,
+    pub chart: Name,
+    pub variable: Name,
     pub value: f64,
     pub min: f64,
     pub max: f64,
@@ -221,11 +301,30 @@ fn parsed(slot: usize) -> Option<&'static Chart> {
 
 /// The chart with this id (`4.1.3.2-49`, ...), when it is embedded and valid. A file whose id
 /// line is not what its parsed chart says falls back on the registry of every chart.
+///
+/// The charts found last are kept per thread in a small table addressed by where the id's
+/// text is (the methods pass the same constant each time): a hit costs a comparison of the id
+/// instead of hashing it, and gives the same chart, since the chart found for an id has that id.
 pub fn get(id: &str) -> Option<&'static Chart> {
-    index()
+    const RECENT: usize = 64;
+    thread_local! {
+        static FOUND: [Cell<Option<&'static Chart>>; RECENT] =
+            const { [const { Cell::new(None) }; RECENT] };
+    }
+    let slot = ((id.as_ptr() as usize >> 2) ^ id.len()) % RECENT;
+    if let Ok(Some(c)) = FOUND.try_with(|f| f[slot].get()) {
+        if c.id == id {
+            return Some(c);
+        }
+    }
+    let chart = index()
         .get(id)
         .and_then(|&slot| parsed(slot))
-        .or_else(|| registry().charts.get(id))
+        .or_else(|| registry().charts.get(id));
+    if chart.is_some() {
+        let _ = FOUND.try_with(|f| f[slot].set(chart));
+    }
+    chart
 }
 
 /// Every valid embedded chart.

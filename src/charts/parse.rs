@@ -2,7 +2,7 @@
 
 use serde::Deserialize;
 
-use super::{Axis, Chart, Node, Output, Outside, Source};
+use super::{Axis, Chart, Name, Node, Output, Outside, Source};
 
 /// Why a chart file cannot be used.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -230,12 +230,14 @@ pub fn parse_chart(text: &str, file: &str) -> Result<Chart, ChartError> {
         ));
     }
     Ok(Chart {
+        shared_id: Name::from(f.id.as_str()),
         id: f.id,
         title: f.title,
         axes: f
             .axes
             .into_iter()
             .map(|a| Axis {
+                shared_symbol: Name::from(a.symbol.as_str()),
                 symbol: a.symbol,
                 name: a.name,
                 unit: a.unit,
