@@ -580,8 +580,7 @@ struct Checks<'a> {
 
 impl Checks<'_> {
     fn at(&self, card: &str, var: Option<&str>) -> (usize, usize) {
-        var.and_then(|v| self.raw.origins.get(&format!("{card}.{v}")))
-            .copied()
+        var.and_then(|v| self.raw.origins.get(card, v))
             .unwrap_or((self.raw.first_line, 0))
     }
 

@@ -5,6 +5,8 @@
 //! `n*value`, logicals `.TRUE.`/`.FALSE.` (also `T`/`F`). The parser never gives up: after a
 //! problem it skips to the next assignment and goes on, so every problem is reported.
 
+use std::borrow::Cow;
+
 use super::lexer::{Tok, Token};
 use crate::error::DeckProblem;
 
@@ -17,8 +19,9 @@ pub enum Lit {
 
 /// One `NAME(index) = values` assignment, repeat counts expanded.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Assignment {
-    pub name: String,
+pub struct Assignment<'t> {
+    /// The variable as written (upper case).
+    pub name: Cow<'t, str>,
     /// 1-based starting index when written `NAME(i)`.
     pub index: Option<usize>,
     pub values: Vec<Lit>,
@@ -41,8 +44,8 @@ const MAX_REPEAT: usize = 1000;
 /// Largest array index accepted in `NAME(i)`; more than any DATCOM array holds.
 const MAX_INDEX: f64 = 1000.0;
 
-struct Parser<'a> {
-    toks: &'a [Token],
+struct Parser<'s, 't> {
+    toks: &'s [Token<'t>],
     pos: usize,
     problems: Vec<BodyProblem>,
 }
@@ -55,8 +58,8 @@ fn is_logical_name(n: &str) -> Option<bool> {
     }
 }
 
-impl<'a> Parser<'a> {
-    fn peek(&self, k: usize) -> Option<&'a Token> {
+impl<'s, 't> Parser<'s, 't> {
+    fn peek(&self, k: usize) -> Option<&'s Token<'t>> {
         self.toks.get(self.pos + k)
     }
 
@@ -77,7 +80,7 @@ impl<'a> Parser<'a> {
     }
 
     /// Reports that `expected` was wanted where the cursor's token (or the end) stands.
-    fn expected_here(&mut self, fallback: &'a Token, variable: Option<&str>, expected: String) {
+    fn expected_here(&mut self, fallback: &'s Token<'t>, variable: Option<&str>, expected: String) {
         let at = self.peek(0).unwrap_or(fallback);
         let found = self
             .peek(0)
@@ -110,7 +113,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn parse(&mut self) -> Vec<Assignment> {
+    fn parse(&mut self) -> Vec<Assignment<'t>> {
         let mut out = Vec::new();
         while let Some(t) = self.peek(0) {
             match &t.tok {
@@ -141,7 +144,7 @@ impl<'a> Parser<'a> {
         out
     }
 
-    fn assignment(&mut self) -> Option<Assignment> {
+    fn assignment(&mut self) -> Option<Assignment<'t>> {
         let head = self.peek(0)?;
         let Tok::Name(name) = &head.tok else {
             return None;
@@ -282,7 +285,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn values(&mut self, name: &str, head: &'a Token) -> Vec<Lit> {
+    fn values(&mut self, name: &str, head: &'s Token<'t>) -> Vec<Lit> {
         let mut out = Vec::new();
         if !self.item(name, &mut out) {
             let at = self.peek(0).unwrap_or(head);
@@ -336,7 +339,7 @@ impl<'a> Parser<'a> {
                         t,
                         Some(name),
                         DeckProblem::MissingComma {
-                            found: next.clone(),
+                            found: next.to_string(),
                         },
                         Some(format!("write `,` after the value of {name}")),
                     );
@@ -367,7 +370,7 @@ impl<'a> Parser<'a> {
 }
 
 /// Parses the tokens of one namelist body (without its `$NAME` and closing `$`).
-pub fn parse_body(toks: &[Token]) -> (Vec<Assignment>, Vec<BodyProblem>) {
+pub fn parse_body<'t>(toks: &[Token<'t>]) -> (Vec<Assignment<'t>>, Vec<BodyProblem>) {
     let mut p = Parser {
         toks,
         pos: 0,
@@ -382,7 +385,7 @@ mod tests {
     use super::*;
     use crate::deck::lexer::lex_line;
 
-    fn parse(s: &str) -> (Vec<Assignment>, Vec<BodyProblem>) {
+    fn parse(s: &str) -> (Vec<Assignment<'_>>, Vec<BodyProblem>) {
         let mut toks = Vec::new();
         for (i, l) in s.lines().enumerate() {
             lex_line(l, i + 1, 1, &mut toks);
@@ -447,7 +450,7 @@ mod tests {
         let (a, p) = parse("XW=1.0, @@ ZW=2.0, XH=3.0");
         assert_eq!(p.len(), 1, "{p:?}");
         assert_eq!(
-            a.iter().map(|a| a.name.as_str()).collect::<Vec<_>>(),
+            a.iter().map(|a| a.name.as_ref()).collect::<Vec<_>>(),
             ["XW", "ZW", "XH"]
         );
     }

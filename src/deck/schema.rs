@@ -120,14 +120,78 @@ pub fn namelists() -> &'static BTreeMap<String, NamelistSpec> {
     SCHEMA.get_or_init(load)
 }
 
+/// A name of at most eight bytes as one integer, for lookups that compare integers instead of
+/// strings. Bytes are packed first to last into the high to low end, padded with zeros, so that
+/// keys order as their names do. `None` for longer names and names holding a NUL byte, which no
+/// namelist or variable has.
+pub(crate) fn key(name: &str) -> Option<u64> {
+    let b = name.as_bytes();
+    if b.len() > 8 || b.contains(&0) {
+        return None;
+    }
+    let mut k = [0u8; 8];
+    k[..b.len()].copy_from_slice(b);
+    Some(u64::from_be_bytes(k))
+}
+
+/// A namelist's schema with its variables in a table sorted by [`key`], for the reader's many
+/// lookups.
+pub(crate) struct Table {
+    pub spec: &'static NamelistSpec,
+    vars: Vec<(u64, &'static VarSpec)>,
+}
+
+impl Table {
+    /// The variable called `name` (upper case), as [`NamelistSpec::var`].
+    pub fn var(&self, name: &str) -> Option<&'static VarSpec> {
+        let k = key(name)?;
+        self.vars
+            .binary_search_by_key(&k, |(vk, _)| *vk)
+            .ok()
+            .map(|i| self.vars[i].1)
+    }
+}
+
+/// Every namelist's [`Table`], sorted by the key of its name.
+fn tables() -> &'static [(u64, Table)] {
+    static TABLES: OnceLock<Vec<(u64, Table)>> = OnceLock::new();
+    TABLES.get_or_init(|| {
+        let mut out: Vec<(u64, Table)> = namelists()
+            .values()
+            .map(|spec| {
+                let mut vars: Vec<(u64, &'static VarSpec)> = spec
+                    .vars
+                    .values()
+                    .map(|v| (key(&v.name).expect("variable names are short"), v))
+                    .collect();
+                vars.sort_by_key(|(k, _)| *k);
+                let k = key(&spec.name).expect("namelist names are short");
+                (k, Table { spec, vars })
+            })
+            .collect();
+        out.sort_by_key(|(k, _)| *k);
+        out
+    })
+}
+
+/// The [`Table`] of the namelist called `name`, as [`namelist`].
+pub(crate) fn table(name: &str) -> Option<&'static Table> {
+    let name = match name.strip_prefix("EXPR") {
+        Some(nn) if nn.len() == 2 && nn.bytes().all(|c| c.is_ascii_digit()) => "EXPRnn",
+        _ => name,
+    };
+    let k = key(name)?;
+    let tables = tables();
+    tables
+        .binary_search_by_key(&k, |(tk, _)| *tk)
+        .ok()
+        .map(|i| &tables[i].1)
+}
+
 /// The namelist called `name` (upper case), if Digital DATCOM has one. The experimental-data
 /// namelists `EXPR01`, `EXPR02`, ... (one per Mach number) share the schema `EXPRnn`.
 pub fn namelist(name: &str) -> Option<&'static NamelistSpec> {
-    let key = match name.strip_prefix("EXPR") {
-        Some(nn) if nn.len() == 2 && nn.chars().all(|c| c.is_ascii_digit()) => "EXPRnn",
-        _ => name,
-    };
-    namelists().get(key)
+    table(name).map(|t| t.spec)
 }
 
 /// Namelists of Missile DATCOM that Digital DATCOM does not have: their presence marks a deck
@@ -231,5 +295,23 @@ mod tests {
             namelist("SYNTHS").unwrap().var("VERTUP").unwrap().kind,
             Kind::Logical
         );
+    }
+
+    #[test]
+    fn tables_find_what_the_maps_hold() {
+        for (name, spec) in namelists() {
+            let t = table(name).unwrap();
+            assert_eq!(t.spec, spec);
+            for (v, var) in &spec.vars {
+                assert_eq!(t.var(v), Some(var));
+                // The reader keeps which elements were assigned in a 128-bit set.
+                assert!(var.len < 128, "{name} {v}");
+            }
+            assert_eq!(t.var("NOSUCHVAR"), None);
+        }
+        assert_eq!(namelist("EXPR07").unwrap().name, "EXPRnn");
+        assert_eq!(namelist("EXPR7"), None);
+        assert_eq!(namelist("FLTCON\0"), None);
+        assert_eq!(namelist("FLTCONXYZ"), None);
     }
 }
