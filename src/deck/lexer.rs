@@ -130,29 +130,34 @@ fn number(i: &str) -> Option<(usize, Tok<'_>)> {
     let b = i.as_bytes();
     let mut k = usize::from(matches!(b.first(), Some(b'+' | b'-')));
     let whole = digits(&b[k..]);
+    let mut dot = false;
     if whole > 0 {
         k += whole;
         if b.get(k) == Some(&b'.') {
+            dot = true;
             k += 1 + digits(&b[k + 1..]);
         }
     } else if b.get(k) == Some(&b'.') && digits(&b[k + 1..]) > 0 {
+        dot = true;
         k += 1 + digits(&b[k + 1..]);
     } else {
         return None;
     }
-    if let Some(b'e' | b'E' | b'd' | b'D') = b.get(k) {
+    let mut exponent = None;
+    if let Some(e @ (b'e' | b'E' | b'd' | b'D')) = b.get(k) {
         let sign = usize::from(matches!(b.get(k + 1), Some(b'+' | b'-')));
         let n = digits(&b[k + 1 + sign..]);
         if n > 0 {
+            exponent = Some(*e);
             k += 1 + sign + n;
         }
     }
     let text = &i[..k];
-    let integer = !text.contains(['.', 'e', 'E', 'd', 'D']);
+    let integer = !dot && exponent.is_none();
     // The text holds only digits, one dot, sign and exponent, which f64 parses once a Fortran
     // `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the parser
     // reports it.
-    let parsed = if text.contains(['d', 'D']) {
+    let parsed = if let Some(b'd' | b'D') = exponent {
         text.replace(['d', 'D'], "E").parse::<f64>()
     } else {
         text.parse::<f64>()
@@ -202,21 +207,20 @@ pub fn capacity_hint(text: &str) -> usize {
 /// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.
 /// `first_column` is the 1-based column of the first character of `text`.
 pub fn lex_line<'a>(text: &'a str, line: usize, first_column: usize, out: &mut Vec<Token<'a>>) {
-    let mut rest = text;
+    let mut at = 0;
     let mut column = first_column;
-    loop {
-        let trimmed = rest.trim_start_matches([' ', '\t']);
-        column += rest.len() - trimmed.len();
-        rest = trimmed;
-        if rest.is_empty() {
-            break;
+    while let Some(c) = text.as_bytes().get(at) {
+        if matches!(c, b' ' | b'\t') {
+            at += 1;
+            column += 1;
+            continue;
         }
-        let (len, tok) = token(rest);
+        let (len, tok) = token(&text[at..]);
         // Every lexeme but `Other` is ASCII: one column a byte.
         let width = if matches!(tok, Tok::Other(_)) { 1 } else { len };
         out.push(Token { tok, line, column });
         column += width;
-        rest = &rest[len..];
+        at += len;
     }
 }
 

@@ -91,24 +91,43 @@ pub struct RawCase {
 /// Where each variable of a case was last assigned: (line, column) by namelist and variable.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Origins {
-    /// By the [`schema::key`]s of the namelist's and the variable's names.
-    places: BTreeMap<(u64, u64), (usize, usize)>,
+    /// By the [`schema::key`]s of the namelist's and the variable's names, sorted.
+    places: Vec<((u64, u64), (usize, usize))>,
 }
 
 impl Origins {
     /// Where variable `var` of namelist `nl` was last assigned.
     pub fn get(&self, nl: &str, var: &str) -> Option<(usize, usize)> {
         let k = (schema::key(nl)?, schema::key(var)?);
-        self.places.get(&k).copied()
+        let i = self.places.binary_search_by_key(&k, |(pk, _)| *pk).ok()?;
+        Some(self.places[i].1)
     }
 
     /// Records that variable `var` of namelist `nl` was assigned at `at` (line, column). Names
     /// longer than eight characters, which no namelist or variable has, are not recorded.
     pub fn insert(&mut self, nl: &str, var: &str, at: (usize, usize)) {
         if let (Some(n), Some(v)) = (schema::key(nl), schema::key(var)) {
-            self.places.insert((n, v), at);
+            self.insert_keys((n, v), at);
         }
     }
+
+    /// As [`Origins::insert`], by the [`schema::key`]s of the names.
+    fn insert_keys(&mut self, keys: (u64, u64), at: (usize, usize)) {
+        *sorted_entry(&mut self.places, keys) = at;
+    }
+}
+
+/// The value of `key` in `list` (sorted by key), inserted as the default if missing. A sorted
+/// vector: the reader's records hold tens of entries, mostly added in order.
+fn sorted_entry<K: Ord + Copy, V: Default>(list: &mut Vec<(K, V)>, key: K) -> &mut V {
+    let i = match list.binary_search_by_key(&key, |(k, _)| *k) {
+        Ok(i) => i,
+        Err(i) => {
+            list.insert(i, (key, V::default()));
+            i
+        }
+    };
+    &mut list[i].1
 }
 
 impl RawCase {
@@ -207,8 +226,8 @@ impl Diags<'_> {
 }
 
 /// Elements assigned in the current case: a set of indices (bit `i` for element `i`) by the
-/// [`schema::key`]s of namelist and variable.
-type Assigned = BTreeMap<(u64, u64), u128>;
+/// [`schema::key`]s of namelist and variable, sorted by key (see [`sorted_entry`]).
+type Assigned = Vec<((u64, u64), u128)>;
 
 struct Reader<'a> {
     file: &'a str,
@@ -402,7 +421,8 @@ impl<'a> Reader<'a> {
             );
         }
         if !is_caseid {
-            if let Some(c) = text.find(|c: char| c.is_ascii_lowercase()) {
+            // A byte search: no byte of a multi-byte character is an ASCII letter.
+            if let Some(c) = text.bytes().position(|c| c.is_ascii_lowercase()) {
                 let col = column_of(text, c);
                 self.note_dialect(n, col, "lower case (the original reads upper case only)");
             }
@@ -410,10 +430,14 @@ impl<'a> Reader<'a> {
         if let Some(c) = raw.find('\t') {
             self.note_dialect(n, column_of(raw, c), "a TAB character");
         }
-        let past = text
-            .char_indices()
-            .nth(CARD_COLUMNS)
-            .map_or("", |(i, _)| &text[i..]);
+        // A line of at most 80 bytes has at most 80 characters.
+        let past = if text.len() > CARD_COLUMNS {
+            text.char_indices()
+                .nth(CARD_COLUMNS)
+                .map_or("", |(i, _)| &text[i..])
+        } else {
+            ""
+        };
         if !past.trim().is_empty() {
             let card = match (&self.open, is_caseid) {
                 (Some(o), _) => Some(o.name.as_ref()),
@@ -503,18 +527,19 @@ impl<'a> Reader<'a> {
         }
         let mut stray: Vec<Token> = Vec::new();
         for t in toks {
-            match self.open.take() {
-                Some(open) => match t.tok {
-                    Tok::Close => self.close(open),
+            match &mut self.open {
+                Some(_) => match t.tok {
+                    Tok::Close => {
+                        let open = self.open.take().expect("open");
+                        self.close(open);
+                    }
                     Tok::Open(name) if schema::table(&name).is_some() => {
+                        let open = self.open.take().expect("open");
                         let swallowed = vec![format!("${name} (line {})", t.line)];
                         self.unterminated(open, swallowed, &format!("before ${name}"));
                         self.start(name, t.line, t.column);
                     }
-                    tok => {
-                        self.body.push(Token { tok, ..t });
-                        self.open = Some(open);
-                    }
+                    tok => self.body.push(Token { tok, ..t }),
                 },
                 None => match t.tok {
                     Tok::Open(name) => {
@@ -967,7 +992,11 @@ impl<'a> Reader<'a> {
                     found.push(mismatch(nl, name, count_var, count, given, hint));
                 } else if (given as f64) > count
                     && schema::key(&var.name)
-                        .and_then(|v| self.assigned.get(&(nl_key, v)))
+                        .and_then(|v| {
+                            let k = (nl_key, v);
+                            let i = self.assigned.binary_search_by_key(&k, |(ak, _)| *ak);
+                            i.ok().map(|i| self.assigned[i].1)
+                        })
                         // Elements after the first `count` (a whole number up to the length).
                         .is_some_and(|set| set >> (count as u32 + 1) != 0)
                 {
@@ -1123,7 +1152,7 @@ impl Target<'_, '_> {
         }
         let end = last.min(var.len);
         let var_key = schema::key(&var.name).expect("variable names are short");
-        let set = self.assigned.entry((self.key, var_key)).or_default();
+        let set = sorted_entry(self.assigned, (self.key, var_key));
         // Recorded up to the first element assigned before, as a search that stops there.
         let mut reassigned = false;
         for i in start..=end {
@@ -1185,7 +1214,7 @@ impl Target<'_, '_> {
                 _ => {}
             }
         }
-        self.origins.insert(name, &var.name, at);
+        self.origins.insert_keys((self.key, var_key), at);
     }
 }
 

@@ -126,12 +126,17 @@ pub fn namelists() -> &'static BTreeMap<String, NamelistSpec> {
 /// namelist or variable has.
 pub(crate) fn key(name: &str) -> Option<u64> {
     let b = name.as_bytes();
-    if b.len() > 8 || b.contains(&0) {
+    if b.len() > 8 {
         return None;
     }
-    let mut k = [0u8; 8];
-    k[..b.len()].copy_from_slice(b);
-    Some(u64::from_be_bytes(k))
+    let mut k = 0u64;
+    for (i, c) in b.iter().enumerate() {
+        if *c == 0 {
+            return None;
+        }
+        k |= u64::from(*c) << (56 - 8 * i);
+    }
+    Some(k)
 }
 
 /// A namelist's schema with its variables in a table sorted by [`key`], for the reader's many
@@ -201,36 +206,19 @@ pub const MISSILE_NAMELISTS: &[&str] = &[
     "DEFLCT", "INERTIA", "SYMCS",
 ];
 
-/// Names that share storage with another in the original (EQUIVALENCE): (namelist, alias,
-/// variable). An assignment to the alias is an assignment to the variable.
-const ALIASES: &[(&str, &str, &str)] = &[
-    ("FLTCON", "ALPHA", "ALSCHD"),
-    ("WGSCHR", "CMO", "CM0"),
-    ("WGSCHR", "CMOT", "CM0T"),
-    ("WGSCHR", "CLAM0", "CLAMO"),
-    ("WGSCHR", "ALPHA0", "ALPHAO"),
-    ("HTSCHR", "CMO", "CM0"),
-    ("HTSCHR", "CMOT", "CM0T"),
-    ("HTSCHR", "CLAM0", "CLAMO"),
-    ("HTSCHR", "ALPHA0", "ALPHAO"),
-    ("VTSCHR", "CMO", "CM0"),
-    ("VTSCHR", "CMOT", "CM0T"),
-    ("VTSCHR", "CLAM0", "CLAMO"),
-    ("VTSCHR", "ALPHA0", "ALPHAO"),
-    ("VFSCHR", "CMO", "CM0"),
-    ("VFSCHR", "CMOT", "CM0T"),
-    ("VFSCHR", "CLAM0", "CLAMO"),
-    ("VFSCHR", "ALPHA0", "ALPHAO"),
-    ("SYMFLP", "SCHD", "SCHA"),
-];
-
-/// The variable an assignment to `var` in `namelist` sets (itself, unless it is an alias).
+/// The variable an assignment to `var` in `namelist` sets: itself, unless it is an alias, a name
+/// that shares storage with another in the original (EQUIVALENCE).
 pub fn canonical<'a>(namelist: &str, var: &'a str) -> &'a str {
-    ALIASES
-        .iter()
-        // The variable first: aliases are few and the namelists' names all six letters long.
-        .find(|(nl, alias, _)| *alias == var && *nl == namelist)
-        .map_or(var, |(_, _, v)| v)
+    let section = matches!(namelist, "WGSCHR" | "HTSCHR" | "VTSCHR" | "VFSCHR");
+    match var {
+        "ALPHA" if namelist == "FLTCON" => "ALSCHD",
+        "CMO" if section => "CM0",
+        "CMOT" if section => "CM0T",
+        "CLAM0" if section => "CLAMO",
+        "ALPHA0" if section => "ALPHAO",
+        "SCHD" if namelist == "SYMFLP" => "SCHA",
+        _ => var,
+    }
 }
 
 /// The namelists that have a variable called `var`, as `$NAME` joined by commas.
@@ -298,6 +286,22 @@ mod tests {
     }
 
     #[test]
+    fn aliases() {
+        assert_eq!(canonical("FLTCON", "ALPHA"), "ALSCHD");
+        assert_eq!(canonical("BODY", "ALPHA"), "ALPHA");
+        for nl in ["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"] {
+            assert_eq!(canonical(nl, "CMO"), "CM0");
+            assert_eq!(canonical(nl, "CMOT"), "CM0T");
+            assert_eq!(canonical(nl, "CLAM0"), "CLAMO");
+            assert_eq!(canonical(nl, "ALPHA0"), "ALPHAO");
+            assert_eq!(canonical(nl, "ALPHA"), "ALPHA");
+        }
+        assert_eq!(canonical("SYMFLP", "SCHD"), "SCHA");
+        assert_eq!(canonical("ASYFLP", "SCHD"), "SCHD");
+        assert_eq!(canonical("FLTCON", "CMO"), "CMO");
+    }
+
+    #[test]
     fn tables_find_what_the_maps_hold() {
         for (name, spec) in namelists() {
             let t = table(name).unwrap();
@@ -313,5 +317,7 @@ mod tests {
         assert_eq!(namelist("EXPR7"), None);
         assert_eq!(namelist("FLTCON\0"), None);
         assert_eq!(namelist("FLTCONXYZ"), None);
+        assert_eq!(key("AB"), Some(0x4142 << 48));
+        assert!(key("AB") < key("ABC") && key("ABC") < key("ABD") && key("AZ") < key("B"));
     }
 }
