@@ -882,7 +882,28 @@ impl<'a> Reader<'a> {
                 );
             }
         }
-        let (assignments, problems) = namelist::parse_body(&self.body);
+        if !self.case.namelists.contains_key(name) {
+            self.case
+                .namelists
+                .insert(name.to_string(), NamelistValues::new());
+        }
+        let values = self.case.namelists.get_mut(name).expect("inserted above");
+        // Assignments are applied as they are read; what they find wrong is reported after the
+        // body's syntax problems.
+        let mut found = Diags {
+            file: self.file,
+            list: Vec::new(),
+        };
+        let mut target = Target {
+            name,
+            key: nl_key,
+            table,
+            values,
+            origins: &mut self.case.origins,
+            assigned: &mut self.assigned,
+            diags: &mut found,
+        };
+        let problems = namelist::parse_body_each(&self.body, |a| target.assign(a));
         for p in problems {
             self.diags.push(
                 Severity::Error,
@@ -893,24 +914,7 @@ impl<'a> Reader<'a> {
                 p.hint,
             );
         }
-        if !self.case.namelists.contains_key(name) {
-            self.case
-                .namelists
-                .insert(name.to_string(), NamelistValues::new());
-        }
-        let values = self.case.namelists.get_mut(name).expect("inserted above");
-        let mut target = Target {
-            name,
-            key: nl_key,
-            table,
-            values,
-            origins: &mut self.case.origins,
-            assigned: &mut self.assigned,
-            diags: &mut self.diags,
-        };
-        for a in &assignments {
-            target.assign(a);
-        }
+        self.diags.list.append(&mut found.list);
         self.body.clear();
     }
 

@@ -113,16 +113,20 @@ impl<'s, 't> Parser<'s, 't> {
         }
     }
 
-    fn parse(&mut self) -> Vec<Assignment<'t>> {
-        let mut out = Vec::new();
+    /// Reads every assignment, handing each to `each`; the vector of values is reused from one
+    /// assignment to the next.
+    fn parse(&mut self, each: &mut dyn FnMut(&Assignment<'t>)) {
+        let mut values = Vec::new();
         while let Some(t) = self.peek(0) {
             match &t.tok {
                 Tok::Comma => {
                     self.pos += 1;
                 }
                 Tok::Name(_) if self.starts_assignment(0) => {
-                    if let Some(a) = self.assignment() {
-                        out.push(a);
+                    if let Some(a) = self.assignment(&mut values) {
+                        each(&a);
+                        values = a.values;
+                        values.clear();
                     }
                 }
                 other => {
@@ -141,10 +145,10 @@ impl<'s, 't> Parser<'s, 't> {
                 }
             }
         }
-        out
     }
 
-    fn assignment(&mut self) -> Option<Assignment<'t>> {
+    /// One assignment; its values are read into `values` (empty), which it takes.
+    fn assignment(&mut self, values: &mut Vec<Lit>) -> Option<Assignment<'t>> {
         let head = self.peek(0)?;
         let Tok::Name(name) = &head.tok else {
             return None;
@@ -195,11 +199,11 @@ impl<'s, 't> Parser<'s, 't> {
                 return None;
             }
         }
-        let values = self.values(name, head);
+        self.values(name, head, values);
         Some(Assignment {
             name: name.clone(),
             index,
-            values,
+            values: std::mem::take(values),
             line: head.line,
             column: head.column,
         })
@@ -285,22 +289,22 @@ impl<'s, 't> Parser<'s, 't> {
         }
     }
 
-    fn values(&mut self, name: &str, head: &'s Token<'t>) -> Vec<Lit> {
-        let mut out = Vec::new();
-        if !self.item(name, &mut out) {
+    /// Reads the value list of `name` into `out`.
+    fn values(&mut self, name: &str, head: &'s Token<'t>, out: &mut Vec<Lit>) {
+        if !self.item(name, out) {
             let at = self.peek(0).unwrap_or(head);
             self.expected_here(at, Some(name), format!("a value for {name}"));
             self.recover();
-            return out;
+            return;
         }
         loop {
             let Some(t) = self.peek(0) else {
-                return out;
+                return;
             };
             match &t.tok {
                 Tok::Comma => {
                     if self.starts_assignment(1) || self.peek(1).is_none() {
-                        return out;
+                        return;
                     }
                     if matches!(self.peek(1).map(|t| &t.tok), Some(Tok::Comma)) {
                         // `a,,b` is a null value in Fortran namelist; DATCOM decks do not use it.
@@ -317,21 +321,21 @@ impl<'s, 't> Parser<'s, 't> {
                         continue;
                     }
                     self.pos += 1;
-                    if !self.item(name, &mut out) {
+                    if !self.item(name, out) {
                         self.expected_here(t, Some(name), format!("a value for {name}"));
                         self.recover();
-                        return out;
+                        return;
                     }
                 }
                 // The end of a card separates items as a comma does (the original's reader).
                 _ if self.pos > 0 && self.toks[self.pos - 1].line != t.line => {
                     if self.starts_assignment(0) {
-                        return out;
+                        return;
                     }
-                    if !self.item(name, &mut out) {
+                    if !self.item(name, out) {
                         self.expected_here(t, Some(name), "`,` or the next assignment".to_string());
                         self.recover();
-                        return out;
+                        return;
                     }
                 }
                 Tok::Name(next) if self.starts_assignment(0) => {
@@ -343,7 +347,7 @@ impl<'s, 't> Parser<'s, 't> {
                         },
                         Some(format!("write `,` after the value of {name}")),
                     );
-                    return out;
+                    return;
                 }
                 Tok::Number { .. } | Tok::Logical(_) => {
                     // Blank-separated values: Fortran list input allows them.
@@ -355,14 +359,14 @@ impl<'s, 't> Parser<'s, 't> {
                         },
                         Some("separate the values with commas".into()),
                     );
-                    if !self.item(name, &mut out) {
+                    if !self.item(name, out) {
                         self.pos += 1;
                     }
                 }
                 _ => {
                     self.expected_here(t, Some(name), "`,` or the next assignment".to_string());
                     self.recover();
-                    return out;
+                    return;
                 }
             }
         }
@@ -371,13 +375,24 @@ impl<'s, 't> Parser<'s, 't> {
 
 /// Parses the tokens of one namelist body (without its `$NAME` and closing `$`).
 pub fn parse_body<'t>(toks: &[Token<'t>]) -> (Vec<Assignment<'t>>, Vec<BodyProblem>) {
+    let mut out = Vec::new();
+    let problems = parse_body_each(toks, |a| out.push(a.clone()));
+    (out, problems)
+}
+
+/// Parses the tokens of one namelist body as [`parse_body`] does, handing each assignment to
+/// `each` in order as it is read instead of collecting them; returns the problems found.
+pub fn parse_body_each<'t>(
+    toks: &[Token<'t>],
+    mut each: impl FnMut(&Assignment<'t>),
+) -> Vec<BodyProblem> {
     let mut p = Parser {
         toks,
         pos: 0,
         problems: Vec::new(),
     };
-    let out = p.parse();
-    (out, p.problems)
+    p.parse(&mut each);
+    p.problems
 }
 
 #[cfg(test)]
