@@ -24,16 +24,40 @@ pub use crate::methods::wing::ZeroLiftReading;
 /// Accessor over one namelist's values that converts to SI.
 struct Nl<'a> {
     /// The namelist's schema (looked up once, not for every variable read).
-    spec: Option<&'static schema::NamelistSpec>,
+    table: Option<&'static schema::Table>,
     values: Option<&'a NamelistValues>,
+    /// The values by the [`schema::key`] of their names, for quick lookup.
+    by_key: Vec<(u64, &'a Value)>,
     dim: Dim,
     /// SYNTHS SCALE, applied to the variables the schema marks as scaled geometry.
     scale: f64,
 }
 
 impl<'a> Nl<'a> {
+    fn new(
+        table: Option<&'static schema::Table>,
+        values: Option<&'a NamelistValues>,
+        dim: Dim,
+        scale: f64,
+    ) -> Nl<'a> {
+        // Keys order as the names do: the map's order is the table's. Longer names, which no
+        // variable has, are left out.
+        let by_key = values
+            .into_iter()
+            .flatten()
+            .filter_map(|(name, v)| Some((schema::key(name)?, v)))
+            .collect();
+        Nl {
+            table,
+            values,
+            by_key,
+            dim,
+            scale,
+        }
+    }
+
     fn spec(&self, var: &str) -> Option<&'static schema::VarSpec> {
-        self.spec.and_then(|s| s.var(var))
+        self.table.and_then(|s| s.var(var))
     }
 
     /// How `var` converts to SI: its dimension and SCALE factor; none for a variable the schema
@@ -60,7 +84,9 @@ impl<'a> Nl<'a> {
     }
 
     fn raw(&self, var: &str) -> Option<&'a Value> {
-        self.values?.get(var)
+        let k = schema::key(var)?;
+        let i = self.by_key.binary_search_by_key(&k, |(vk, _)| *vk).ok()?;
+        Some(self.by_key[i].1)
     }
 
     /// Scalar in SI.
@@ -480,11 +506,25 @@ const PLANFORMS: [(&str, &str); 4] = [
     ("VFPLNF", "VFSCHR"),
 ];
 
-/// Namelists that have a typed home in [`Case`].
-const TYPED: &[&str] = &[
-    "FLTCON", "OPTINS", "SYNTHS", "BODY", "WGPLNF", "HTPLNF", "VTPLNF", "VFPLNF", "WGSCHR",
-    "HTSCHR", "VTSCHR", "VFSCHR", "TVTPAN",
-];
+/// Whether namelist `name` has a typed home in [`Case`].
+fn typed(name: &str) -> bool {
+    matches!(
+        name,
+        "FLTCON"
+            | "OPTINS"
+            | "SYNTHS"
+            | "BODY"
+            | "WGPLNF"
+            | "HTPLNF"
+            | "VTPLNF"
+            | "VFPLNF"
+            | "WGSCHR"
+            | "HTSCHR"
+            | "VTSCHR"
+            | "VFSCHR"
+            | "TVTPAN"
+    )
+}
 
 fn flight(n: &Nl) -> FlightInput {
     let nmach = n.count("NMACH");
@@ -578,10 +618,9 @@ struct Checks<'a> {
     out: Vec<Diagnostic>,
 }
 
-impl Checks<'_> {
+impl<'a> Checks<'a> {
     fn at(&self, card: &str, var: Option<&str>) -> (usize, usize) {
-        var.and_then(|v| self.raw.origins.get(&format!("{card}.{v}")))
-            .copied()
+        var.and_then(|v| self.raw.origins.get(card, v))
             .unwrap_or((self.raw.first_line, 0))
     }
 
@@ -618,30 +657,26 @@ impl Checks<'_> {
     }
 
     /// The deck's values of an array (or scalar), as written, with their 1-based indices.
-    fn values(&self, card: &str, var: &str) -> Vec<(usize, f64)> {
+    fn values(&self, card: &str, var: &str) -> impl Iterator<Item = (usize, f64)> + 'a {
         self.raw
             .namelists
             .get(card)
             .and_then(|n| n.get(var))
             .and_then(Value::numbers)
-            .map(|v| {
-                v.iter()
-                    .enumerate()
-                    .filter_map(|(i, x)| x.map(|x| (i + 1, x)))
-                    .collect()
-            })
             .unwrap_or_default()
+            .iter()
+            .enumerate()
+            .filter_map(|(i, x)| x.map(|x| (i + 1, x)))
     }
 
     fn sign(&mut self, card: &str, var: &str, allow_zero: bool) {
-        let scalar = schema::namelist(card)
-            .and_then(|s| s.var(var))
-            .is_some_and(|v| v.len == 1);
-        let bad =
-            self.values(card, var)
-                .into_iter()
-                .find(|(_, x)| if allow_zero { *x < 0.0 } else { *x <= 0.0 });
+        let bad = self
+            .values(card, var)
+            .find(|(_, x)| if allow_zero { *x < 0.0 } else { *x <= 0.0 });
         if let Some((i, found)) = bad {
+            let scalar = schema::table(card)
+                .and_then(|s| s.var(var))
+                .is_some_and(|v| v.len == 1);
             let problem = DeckProblem::NotPositive {
                 variable: var.to_string(),
                 index: (!scalar).then_some(i),
@@ -662,16 +697,12 @@ impl Checks<'_> {
 
     /// Values outside `[min, max]` given in SI, reported in the deck's units.
     fn range(&mut self, card: &str, var: &str, (min, max): (f64, f64), dim: Dim) {
-        let d = schema::namelist(card)
+        let d = schema::table(card)
             .and_then(|s| s.var(var))
             .map_or(Dimension::None, |v| v.dimension);
         let lo = units::from_si(min, dim, d);
         let hi = units::from_si(max, dim, d);
-        if let Some((i, found)) = self
-            .values(card, var)
-            .into_iter()
-            .find(|(_, x)| !(lo..=hi).contains(x))
-        {
+        if let Some((i, found)) = self.values(card, var).find(|(_, x)| !(lo..=hi).contains(x)) {
             let problem = DeckProblem::OutOfRange {
                 variable: format!("{var}({i})"),
                 found,
@@ -697,12 +728,8 @@ impl Case {
             .scalar("SYNTHS", "SCALE")
             .filter(|s| *s > 0.0)
             .unwrap_or(1.0);
-        let nl = |name: &'static str| Nl {
-            spec: schema::namelist(name),
-            values: raw.namelists.get(name),
-            dim,
-            scale,
-        };
+        let nl =
+            |name: &'static str| Nl::new(schema::table(name), raw.namelists.get(name), dim, scale);
         let has = |name: &str| raw.namelists.contains_key(name);
         let fl = nl("FLTCON");
         let op = nl("OPTINS");
@@ -831,7 +858,7 @@ impl Case {
             other: raw
                 .namelists
                 .iter()
-                .filter(|(k, _)| !TYPED.contains(&k.as_str()))
+                .filter(|(k, _)| !typed(k))
                 .map(|(k, v)| (k.clone(), v.clone()))
                 .collect(),
             save: raw.save,
@@ -1029,7 +1056,7 @@ impl Case {
                     None,
                 );
             }
-            let x = c.values("BODY", "X");
+            let x: Vec<(usize, f64)> = c.values("BODY", "X").collect();
             if let Some(w) = x.windows(2).find(|w| w[1].1 < w[0].1) {
                 let ((i, xi), (j, xj)) = (w[0], w[1]);
                 c.push(

@@ -1,22 +1,18 @@
-//! Lexemes of namelist text, recognised with nom, one physical line at a time.
+//! Lexemes of namelist text, one physical line at a time.
 //!
 //! The grammar above lexemes (assignments, value lists, recovery) is in `namelist.rs`: it needs
-//! look-ahead across lines and error recovery, which is clearer written over tokens.
+//! look-ahead across lines and error recovery, which is clearer written over tokens. Tokens
+//! borrow their text from the line: reading a deck copies no names or numbers.
 
-use nom::branch::alt;
-use nom::bytes::complete::{tag_no_case, take_while, take_while1};
-use nom::character::complete::{char, digit0, digit1, one_of};
-use nom::combinator::{opt, recognize};
-use nom::sequence::{pair, tuple};
-use nom::IResult;
+use std::borrow::Cow;
 
 /// A lexeme of namelist text.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Tok {
-    /// A name: variable, or the T/F logical constants (decided by the parser).
-    Name(String),
-    /// `$NAME`: opens a namelist.
-    Open(String),
+pub enum Tok<'a> {
+    /// A name: variable, or the T/F logical constants (decided by the parser). Upper case.
+    Name(Cow<'a, str>),
+    /// `$NAME`: opens a namelist. Upper case.
+    Open(Cow<'a, str>),
     /// `$` or `&END`/`$END`: closes a namelist.
     Close,
     LParen,
@@ -28,18 +24,18 @@ pub enum Tok {
     Number {
         value: f64,
         integer: bool,
-        text: String,
+        text: &'a str,
     },
     Logical(bool),
     /// Anything else, one character.
     Other(char),
 }
 
-impl Tok {
+impl Tok<'_> {
     /// The token as written (upper case).
     pub fn text(&self) -> String {
         match self {
-            Tok::Name(n) => n.clone(),
+            Tok::Name(n) => n.to_string(),
             Tok::Open(n) => format!("${n}"),
             Tok::Close => "$".into(),
             Tok::LParen => "(".into(),
@@ -47,7 +43,7 @@ impl Tok {
             Tok::Equals => "=".into(),
             Tok::Comma => ",".into(),
             Tok::Star => "*".into(),
-            Tok::Number { text, .. } => text.clone(),
+            Tok::Number { text, .. } => text.to_string(),
             Tok::Logical(b) => (if *b { ".TRUE." } else { ".FALSE." }).into(),
             Tok::Other(c) => c.escape_default().to_string(),
         }
@@ -73,110 +69,132 @@ impl Tok {
 
 /// A token with its 1-based line and column.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Token {
-    pub tok: Tok,
+pub struct Token<'a> {
+    pub tok: Tok<'a>,
     pub line: usize,
     pub column: usize,
 }
 
-fn is_name_start(c: char) -> bool {
-    c.is_ascii_alphabetic()
-}
-
-fn is_name_char(c: char) -> bool {
-    c.is_ascii_alphanumeric() || c == '_'
-}
-
-fn name(i: &str) -> IResult<&str, &str> {
-    recognize(pair(take_while1(is_name_start), take_while(is_name_char)))(i)
-}
-
-fn open_or_close(i: &str) -> IResult<&str, Tok> {
-    let (rest, _) = alt((char('$'), char('&')))(i)?;
-    match name(rest) {
-        Ok((after, n)) if n.eq_ignore_ascii_case("END") => Ok((after, Tok::Close)),
-        Ok((after, n)) => Ok((after, Tok::Open(n.to_ascii_uppercase()))),
-        Err(_) => Ok((rest, Tok::Close)),
+/// `s` in upper case, copied only when it has lower-case letters.
+pub fn upper(s: &str) -> Cow<'_, str> {
+    if s.bytes().any(|b| b.is_ascii_lowercase()) {
+        Cow::Owned(s.to_ascii_uppercase())
+    } else {
+        Cow::Borrowed(s)
     }
 }
 
-fn logical(i: &str) -> IResult<&str, Tok> {
+/// Length in bytes of the run of ASCII digits at the start of `b`.
+fn digits(b: &[u8]) -> usize {
+    b.iter().take_while(|c| c.is_ascii_digit()).count()
+}
+
+/// Length of a name (a letter, then letters, digits and `_`) at the start of `b`; 0 for none.
+fn name_len(b: &[u8]) -> usize {
+    match b.first() {
+        Some(c) if c.is_ascii_alphabetic() => {
+            1 + b[1..]
+                .iter()
+                .take_while(|c| c.is_ascii_alphanumeric() || **c == b'_')
+                .count()
+        }
+        _ => 0,
+    }
+}
+
+/// `$NAME`, `$END` or a bare `$` (and the same with `&`); `i` starts with the sign.
+fn open_or_close(i: &str) -> (usize, Tok<'_>) {
+    let n = name_len(&i.as_bytes()[1..]);
+    let name = &i[1..1 + n];
+    if n == 0 || name.eq_ignore_ascii_case("END") {
+        (1 + n, Tok::Close)
+    } else {
+        (1 + n, Tok::Open(upper(name)))
+    }
+}
+
+/// `.TRUE.`, `.FALSE.`, `.T.` or `.F.`, any case.
+fn logical(b: &[u8]) -> Option<(usize, Tok<'static>)> {
+    if b.len() < 3 || !b[1].is_ascii_alphabetic() {
+        return None;
+    }
+    [&b".TRUE."[..], b".FALSE.", b".T.", b".F."]
+        .iter()
+        .find(|word| b.len() >= word.len() && b[..word.len()].eq_ignore_ascii_case(word))
+        .map(|word| (word.len(), Tok::Logical(word[1] == b'T')))
+}
+
+/// A number: optional sign, digits with an optional `.` and fraction (or `.` and a fraction),
+/// optional exponent `E`/`D` with optional sign and digits.
+fn number(i: &str) -> Option<(usize, Tok<'_>)> {
     let b = i.as_bytes();
-    if b.len() < 3 || b[0] != b'.' || !b[1].is_ascii_alphabetic() {
-        return Err(nom::Err::Error(nom::error::Error::new(
-            i,
-            nom::error::ErrorKind::Tag,
-        )));
+    let mut k = usize::from(matches!(b.first(), Some(b'+' | b'-')));
+    let whole = digits(&b[k..]);
+    let mut dot = false;
+    if whole > 0 {
+        k += whole;
+        if b.get(k) == Some(&b'.') {
+            dot = true;
+            k += 1 + digits(&b[k + 1..]);
+        }
+    } else if b.get(k) == Some(&b'.') && digits(&b[k + 1..]) > 0 {
+        dot = true;
+        k += 1 + digits(&b[k + 1..]);
+    } else {
+        return None;
     }
-    let (rest, word) = alt((
-        tag_no_case(".TRUE."),
-        tag_no_case(".FALSE."),
-        tag_no_case(".T."),
-        tag_no_case(".F."),
-    ))(i)?;
-    let value = word.as_bytes()[1].eq_ignore_ascii_case(&b'T');
-    Ok((rest, Tok::Logical(value)))
-}
-
-fn exponent(i: &str) -> IResult<&str, &str> {
-    recognize(tuple((one_of("eEdD"), opt(one_of("+-")), digit1)))(i)
-}
-
-fn mantissa(i: &str) -> IResult<&str, &str> {
-    alt((
-        recognize(tuple((digit1, opt(pair(char('.'), digit0))))),
-        recognize(pair(char('.'), digit1)),
-    ))(i)
-}
-
-fn number(i: &str) -> IResult<&str, Tok> {
-    let (rest, text) = recognize(tuple((opt(one_of("+-")), mantissa, opt(exponent))))(i)?;
-    let integer = !text.contains(['.', 'e', 'E', 'd', 'D']);
-    // `recognize` above accepts only digits, one dot, sign and exponent, which f64 parses once a
-    // Fortran `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the
-    // parser reports it.
-    let parsed = if text.contains(['d', 'D']) {
+    let mut exponent = None;
+    if let Some(e @ (b'e' | b'E' | b'd' | b'D')) = b.get(k) {
+        let sign = usize::from(matches!(b.get(k + 1), Some(b'+' | b'-')));
+        let n = digits(&b[k + 1 + sign..]);
+        if n > 0 {
+            exponent = Some(*e);
+            k += 1 + sign + n;
+        }
+    }
+    let text = &i[..k];
+    let integer = !dot && exponent.is_none();
+    // The text holds only digits, one dot, sign and exponent, which f64 parses once a Fortran
+    // `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the parser
+    // reports it.
+    let parsed = if let Some(b'd' | b'D') = exponent {
         text.replace(['d', 'D'], "E").parse::<f64>()
     } else {
         text.parse::<f64>()
     };
     let value = parsed.unwrap_or(f64::INFINITY);
-    Ok((
-        rest,
+    Some((
+        k,
         Tok::Number {
             value,
             integer,
-            text: text.to_string(),
+            text,
         },
     ))
 }
 
-fn punct(i: &str) -> IResult<&str, Tok> {
-    let (rest, c) = one_of("(),=*")(i)?;
-    let t = match c {
-        '(' => Tok::LParen,
-        ')' => Tok::RParen,
-        ',' => Tok::Comma,
-        '=' => Tok::Equals,
-        _ => Tok::Star,
+/// One lexeme and its length in bytes. The first character decides which lexemes can start
+/// here; anything that starts none is one character of `Other`.
+fn token(i: &str) -> (usize, Tok<'_>) {
+    let b = i.as_bytes();
+    let found = match b[0] {
+        b'$' | b'&' => Some(open_or_close(i)),
+        b'.' => logical(b).or_else(|| number(i)),
+        b'0'..=b'9' | b'+' | b'-' => number(i),
+        b'(' => Some((1, Tok::LParen)),
+        b')' => Some((1, Tok::RParen)),
+        b',' => Some((1, Tok::Comma)),
+        b'=' => Some((1, Tok::Equals)),
+        b'*' => Some((1, Tok::Star)),
+        _ => match name_len(b) {
+            0 => None,
+            n => Some((n, Tok::Name(upper(&i[..n])))),
+        },
     };
-    Ok((rest, t))
-}
-
-fn name_token(i: &str) -> IResult<&str, Tok> {
-    name(i).map(|(r, n)| (r, Tok::Name(n.to_ascii_uppercase())))
-}
-
-/// One lexeme. The first character decides which lexemes can start here (the same choice as
-/// trying open/close, logical, number, punctuation and name in turn, without the failed tries).
-fn token(i: &str) -> IResult<&str, Tok> {
-    match i.as_bytes().first() {
-        Some(b'$' | b'&') => open_or_close(i),
-        Some(b'.') => alt((logical, number))(i),
-        Some(b'0'..=b'9' | b'+' | b'-') => number(i),
-        Some(b'(' | b')' | b',' | b'=' | b'*') => punct(i),
-        _ => name_token(i),
-    }
+    found.unwrap_or_else(|| {
+        let c = i.chars().next().unwrap_or_default();
+        (c.len_utf8(), Tok::Other(c))
+    })
 }
 
 /// A capacity for the tokens of `text` that most lines do not outgrow (values and their commas
@@ -188,23 +206,21 @@ pub fn capacity_hint(text: &str) -> usize {
 
 /// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.
 /// `first_column` is the 1-based column of the first character of `text`.
-pub fn lex_line(text: &str, line: usize, first_column: usize, out: &mut Vec<Token>) {
-    let mut rest = text;
+pub fn lex_line<'a>(text: &'a str, line: usize, first_column: usize, out: &mut Vec<Token<'a>>) {
+    let mut at = 0;
     let mut column = first_column;
-    loop {
-        let trimmed = rest.trim_start_matches([' ', '\t']);
-        column += rest.len() - trimmed.len();
-        rest = trimmed;
-        let Some(c) = rest.chars().next() else {
-            break;
-        };
-        let (after, tok) = match token(rest) {
-            Ok(r) => r,
-            Err(_) => (&rest[c.len_utf8()..], Tok::Other(c)),
-        };
+    while let Some(c) = text.as_bytes().get(at) {
+        if matches!(c, b' ' | b'\t') {
+            at += 1;
+            column += 1;
+            continue;
+        }
+        let (len, tok) = token(&text[at..]);
+        // Every lexeme but `Other` is ASCII: one column a byte.
+        let width = if matches!(tok, Tok::Other(_)) { 1 } else { len };
         out.push(Token { tok, line, column });
-        column += rest[..rest.len() - after.len()].chars().count();
-        rest = after;
+        column += width;
+        at += len;
     }
 }
 
@@ -212,7 +228,7 @@ pub fn lex_line(text: &str, line: usize, first_column: usize, out: &mut Vec<Toke
 mod tests {
     use super::*;
 
-    fn toks(s: &str) -> Vec<Tok> {
+    fn toks(s: &str) -> Vec<Tok<'_>> {
         let mut v = Vec::new();
         lex_line(s, 1, 1, &mut v);
         v.into_iter().map(|t| t.tok).collect()
@@ -251,20 +267,20 @@ mod tests {
                 Tok::Number {
                     value: 1.0,
                     integer: true,
-                    text: "1".into()
+                    text: "1"
                 },
                 Tok::RParen,
                 Tok::Equals,
                 Tok::Number {
                     value: 2.0,
                     integer: true,
-                    text: "2".into()
+                    text: "2"
                 },
                 Tok::Star,
                 Tok::Number {
                     value: 0.141,
                     integer: false,
-                    text: "0.141".into()
+                    text: "0.141"
                 },
                 Tok::Comma,
                 Tok::Name("VERTUP".into()),
@@ -292,7 +308,7 @@ mod tests {
                 Tok::Number {
                     value: 1.0,
                     integer: true,
-                    text: "1".into()
+                    text: "1"
                 }
             ]
         );

@@ -1,6 +1,6 @@
 //! The Digital DATCOM deck reader: text to cases of namelist values and control cards.
 //!
-//! Reading is in three layers: [`lexer`] (nom) splits namelist text into tokens; [`namelist`]
+//! Reading is in three layers: [`lexer`] splits namelist text into tokens; [`namelist`]
 //! reads assignments from the tokens of one namelist body; this module walks the deck line by
 //! line, sorts lines into control cards, namelists and comments, applies assignments to the
 //! schema of each namelist, and groups everything into cases. Every problem becomes a
@@ -12,15 +12,16 @@ pub mod namelist;
 pub mod schema;
 pub mod writer;
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::borrow::Cow;
+use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
 use crate::error::{DeckProblem, Diagnostic, Severity};
-use cards::{AirfoilCard, Card, Cards};
+use cards::{AirfoilCard, Card, Cards, Surface};
 use lexer::{Tok, Token};
 use namelist::Lit;
-use schema::{Kind, NamelistSpec};
+use schema::{Kind, Table};
 
 /// Columns the original program reads from each card.
 pub const CARD_COLUMNS: usize = 80;
@@ -82,10 +83,51 @@ pub struct RawCase {
     pub airfoils: Vec<AirfoilCard>,
     /// The case ends with SAVE: its data carries into the next case.
     pub save: bool,
-    /// Where each variable was last assigned, `NAMELIST.VARIABLE` -> (line, column), so that
-    /// later checks can point at it.
+    /// Where each variable was last assigned, so that later checks can point at it.
     #[serde(skip)]
-    pub origins: BTreeMap<String, (usize, usize)>,
+    pub origins: Origins,
+}
+
+/// Where each variable of a case was last assigned: (line, column) by namelist and variable.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Origins {
+    /// By the [`schema::key`]s of the namelist's and the variable's names, sorted.
+    places: Vec<((u64, u64), (usize, usize))>,
+}
+
+impl Origins {
+    /// Where variable `var` of namelist `nl` was last assigned.
+    pub fn get(&self, nl: &str, var: &str) -> Option<(usize, usize)> {
+        let k = (schema::key(nl)?, schema::key(var)?);
+        let i = self.places.binary_search_by_key(&k, |(pk, _)| *pk).ok()?;
+        Some(self.places[i].1)
+    }
+
+    /// Records that variable `var` of namelist `nl` was assigned at `at` (line, column). Names
+    /// longer than eight characters, which no namelist or variable has, are not recorded.
+    pub fn insert(&mut self, nl: &str, var: &str, at: (usize, usize)) {
+        if let (Some(n), Some(v)) = (schema::key(nl), schema::key(var)) {
+            self.insert_keys((n, v), at);
+        }
+    }
+
+    /// As [`Origins::insert`], by the [`schema::key`]s of the names.
+    fn insert_keys(&mut self, keys: (u64, u64), at: (usize, usize)) {
+        *sorted_entry(&mut self.places, keys) = at;
+    }
+}
+
+/// The value of `key` in `list` (sorted by key), inserted as the default if missing. A sorted
+/// vector: the reader's records hold tens of entries, mostly added in order.
+fn sorted_entry<K: Ord + Copy, V: Default>(list: &mut Vec<(K, V)>, key: K) -> &mut V {
+    let i = match list.binary_search_by_key(&key, |(k, _)| *k) {
+        Ok(i) => i,
+        Err(i) => {
+            list.insert(i, (key, V::default()));
+            i
+        }
+    };
+    &mut list[i].1
 }
 
 impl RawCase {
@@ -114,12 +156,14 @@ impl crate::error::Diagnosed for RawDeck {
     }
 }
 
-/// A namelist being read: opened on some line, its tokens gathered until `$`.
-struct Open {
-    name: String,
+/// A namelist being read: opened on some line; its tokens are gathered in [`Reader::body`]
+/// until `$`.
+struct Open<'a> {
+    name: Cow<'a, str>,
+    /// The namelist's schema, when Digital DATCOM has it.
+    table: Option<&'static Table>,
     line: usize,
     column: usize,
-    tokens: Vec<Token>,
 }
 
 /// Longest excerpt of deck text quoted in a message.
@@ -152,18 +196,56 @@ fn column_of(text: &str, byte: usize) -> usize {
     text[..byte.min(text.len())].chars().count() + 1
 }
 
+/// Diagnostics of one deck as they are found.
+struct Diags<'a> {
+    file: &'a str,
+    list: Vec<Diagnostic>,
+}
+
+impl Diags<'_> {
+    fn push(
+        &mut self,
+        severity: Severity,
+        (line, column): (usize, usize),
+        card: Option<&str>,
+        variable: Option<&str>,
+        problem: DeckProblem,
+        hint: Option<String>,
+    ) {
+        self.list.push(Diagnostic {
+            severity,
+            file: self.file.to_string(),
+            line,
+            column,
+            card: card.map(str::to_string),
+            variable: variable.map(str::to_string),
+            problem,
+            hint,
+        });
+    }
+}
+
+/// Elements assigned in the current case: a set of indices (bit `i` for element `i`) by the
+/// [`schema::key`]s of namelist and variable, sorted by key (see [`sorted_entry`]).
+type Assigned = Vec<((u64, u64), u128)>;
+
 struct Reader<'a> {
     file: &'a str,
-    diags: Vec<Diagnostic>,
+    diags: Diags<'a>,
     cases: Vec<RawCase>,
     case: RawCase,
-    /// Elements assigned in the current case, by namelist: (variable, index).
-    assigned: BTreeMap<String, BTreeSet<(&'static str, usize)>>,
-    /// Namelists that appeared in the current case.
-    seen: BTreeSet<String>,
+    assigned: Assigned,
+    /// Namelists that appeared in the current case, by [`schema::key`].
+    seen: Vec<u64>,
+    /// Surfaces that had a NACA card in the current case.
+    seen_naca: Vec<Surface>,
     /// The current case began with data carried by SAVE, in this unit system.
     carried: Option<cards::Dim>,
-    open: Option<Open>,
+    open: Option<Open<'a>>,
+    /// Tokens of the open namelist so far.
+    body: Vec<Token<'a>>,
+    /// Tokens of the line being read (kept to reuse its allocation).
+    line_tokens: Vec<Token<'a>>,
     lines: Vec<&'a str>,
 }
 
@@ -193,17 +275,18 @@ fn strip_bang(text: &str) -> (&str, bool) {
     }
 }
 
-/// `$NAME` or `&NAME` at the start of a trimmed line.
-fn opens_namelist(trimmed: &str) -> Option<String> {
+/// `$NAME` or `&NAME` at the start of a trimmed line: the name in upper case.
+fn opens_namelist(trimmed: &str) -> Option<Cow<'_, str>> {
     let rest = trimmed.strip_prefix(['$', '&'])?;
-    let name: String = rest
-        .chars()
+    let len = rest
+        .bytes()
         .take_while(|c| c.is_ascii_alphanumeric())
-        .collect();
+        .count();
+    let name = &rest[..len];
     if name.is_empty() || name.eq_ignore_ascii_case("END") {
         None
     } else {
-        Some(name.to_ascii_uppercase())
+        Some(lexer::upper(name))
     }
 }
 
@@ -217,9 +300,9 @@ fn card_label(line: &str) -> String {
 }
 
 /// True for tokens that begin an assignment (`NAME =` or `NAME (`).
-fn has_assignment(toks: &[Token]) -> Option<&str> {
+fn has_assignment<'t>(toks: &'t [Token<'_>]) -> Option<&'t str> {
     toks.windows(2).find_map(|w| match (&w[0].tok, &w[1].tok) {
-        (Tok::Name(n), Tok::Equals | Tok::LParen) => Some(n.as_str()),
+        (Tok::Name(n), Tok::Equals | Tok::LParen) => Some(n.as_ref()),
         _ => None,
     })
 }
@@ -228,22 +311,13 @@ impl<'a> Reader<'a> {
     fn diag(
         &mut self,
         severity: Severity,
-        (line, column): (usize, usize),
+        at: (usize, usize),
         card: Option<&str>,
         variable: Option<&str>,
         problem: DeckProblem,
         hint: Option<String>,
     ) {
-        self.diags.push(Diagnostic {
-            severity,
-            file: self.file.to_string(),
-            line,
-            column,
-            card: card.map(str::to_string),
-            variable: variable.map(str::to_string),
-            problem,
-            hint,
-        });
+        self.diags.push(severity, at, card, variable, problem, hint);
     }
 
     fn note_dialect(&mut self, line: usize, column: usize, what: &str) {
@@ -280,7 +354,7 @@ impl<'a> Reader<'a> {
             self.unterminated(open, vec!["the end of the deck".into()], &hint);
         }
         self.end_case(true);
-        let mut diagnostics = self.diags;
+        let mut diagnostics = self.diags.list;
         sort_diagnostics(&mut diagnostics);
         RawDeck {
             file: self.file.to_string(),
@@ -293,15 +367,17 @@ impl<'a> Reader<'a> {
         for (i, l) in self.lines.iter().enumerate() {
             let t = l.trim();
             let Some(n) = opens_namelist(t) else { continue };
-            if schema::MISSILE_NAMELISTS.contains(&n.as_str()) {
+            if schema::MISSILE_NAMELISTS.contains(&n.as_ref()) {
                 return Some(Diagnostic {
                     severity: Severity::Error,
                     file: self.file.to_string(),
                     line: i + 1,
                     column: l.find(['$', '&']).map_or(1, |c| column_of(l, c)),
-                    card: Some(n.clone()),
+                    card: Some(n.to_string()),
                     variable: None,
-                    problem: DeckProblem::MissileDatcom { namelist: n },
+                    problem: DeckProblem::MissileDatcom {
+                        namelist: n.into_owned(),
+                    },
                     hint: Some(
                         "run it with Missile DATCOM; Digital DATCOM describes aircraft with $BODY, $WGPLNF, $SYNTHS ...".into(),
                     ),
@@ -311,7 +387,7 @@ impl<'a> Reader<'a> {
         None
     }
 
-    fn line(&mut self, n: usize, raw: &str, all: &[&str]) {
+    fn line(&mut self, n: usize, raw: &'a str, all: &[&str]) {
         let trimmed_all = raw.trim();
         let first_col = column_of(raw, raw.len() - raw.trim_start().len());
         if trimmed_all.is_empty() {
@@ -345,7 +421,8 @@ impl<'a> Reader<'a> {
             );
         }
         if !is_caseid {
-            if let Some(c) = text.find(|c: char| c.is_ascii_lowercase()) {
+            // A byte search: no byte of a multi-byte character is an ASCII letter.
+            if let Some(c) = text.bytes().position(|c| c.is_ascii_lowercase()) {
                 let col = column_of(text, c);
                 self.note_dialect(n, col, "lower case (the original reads upper case only)");
             }
@@ -353,20 +430,24 @@ impl<'a> Reader<'a> {
         if let Some(c) = raw.find('\t') {
             self.note_dialect(n, column_of(raw, c), "a TAB character");
         }
-        let past = text
-            .char_indices()
-            .nth(CARD_COLUMNS)
-            .map_or("", |(i, _)| &text[i..]);
+        // A line of at most 80 bytes has at most 80 characters.
+        let past = if text.len() > CARD_COLUMNS {
+            text.char_indices()
+                .nth(CARD_COLUMNS)
+                .map_or("", |(i, _)| &text[i..])
+        } else {
+            ""
+        };
         if !past.trim().is_empty() {
             let card = match (&self.open, is_caseid) {
-                (Some(o), _) => Some(o.name.clone()),
-                (None, true) => Some("CASEID".to_string()),
+                (Some(o), _) => Some(o.name.as_ref()),
+                (None, true) => Some("CASEID"),
                 (None, false) => None,
             };
-            self.diag(
+            self.diags.push(
                 Severity::Warning,
                 (n, CARD_COLUMNS + 1),
-                card.as_deref(),
+                card,
                 None,
                 DeckProblem::PastColumn80 {
                     found: excerpt(past),
@@ -385,12 +466,12 @@ impl<'a> Reader<'a> {
     fn begins_new(text: &str, n: usize) -> bool {
         let t = text.trim();
         if let Some(name) = opens_namelist(t) {
-            return schema::namelist(&name).is_some();
+            return schema::table(&name).is_some();
         }
         parse_card(t, n).is_some()
     }
 
-    fn namelist_line(&mut self, n: usize, text: &str, all: &[&str], open: Open) {
+    fn namelist_line(&mut self, n: usize, text: &'a str, all: &[&str], open: Open<'a>) {
         if Self::begins_new(text, n) {
             // The original reads on to the next `$`: list the cards it would swallow.
             let mut swallowed = Vec::new();
@@ -424,36 +505,46 @@ impl<'a> Reader<'a> {
             );
         }
         self.open = Some(open);
-        let mut toks = Vec::with_capacity(lexer::capacity_hint(text));
+        let mut toks = self.lex(text, n);
+        self.feed(toks.drain(..));
+        self.line_tokens = toks;
+    }
+
+    /// The tokens of line `n`, in the reused line buffer (to be put back after use).
+    fn lex(&mut self, text: &'a str, n: usize) -> Vec<Token<'a>> {
+        let mut toks = std::mem::take(&mut self.line_tokens);
+        toks.clear();
+        toks.reserve(lexer::capacity_hint(text));
         lexer::lex_line(text, n, 1, &mut toks);
-        self.feed(toks);
+        toks
     }
 
     /// Reads the tokens of a line: into the open namelist until `$` closes it; after that, a
     /// `$NAME` opens the next one, and anything else on the line is stray.
-    fn feed(&mut self, toks: Vec<Token>) {
-        if let Some(open) = &mut self.open {
-            open.tokens.reserve(toks.len());
+    fn feed(&mut self, toks: impl ExactSizeIterator<Item = Token<'a>>) {
+        if self.open.is_some() {
+            self.body.reserve(toks.len());
         }
         let mut stray: Vec<Token> = Vec::new();
         for t in toks {
-            match self.open.take() {
-                Some(mut open) => match &t.tok {
-                    Tok::Close => self.close(open),
-                    Tok::Open(name) if schema::namelist(name).is_some() => {
+            match &mut self.open {
+                Some(_) => match t.tok {
+                    Tok::Close => {
+                        let open = self.open.take().expect("open");
+                        self.close(open);
+                    }
+                    Tok::Open(name) if schema::table(&name).is_some() => {
+                        let open = self.open.take().expect("open");
                         let swallowed = vec![format!("${name} (line {})", t.line)];
                         self.unterminated(open, swallowed, &format!("before ${name}"));
-                        self.start(name.clone(), t.line, t.column);
+                        self.start(name, t.line, t.column);
                     }
-                    _ => {
-                        open.tokens.push(t);
-                        self.open = Some(open);
-                    }
+                    tok => self.body.push(Token { tok, ..t }),
                 },
-                None => match &t.tok {
+                None => match t.tok {
                     Tok::Open(name) => {
                         self.stray(std::mem::take(&mut stray));
-                        self.start(name.clone(), t.line, t.column);
+                        self.start(name, t.line, t.column);
                     }
                     // `$$`: a doubled terminator; harmless.
                     Tok::Close if stray.is_empty() => {}
@@ -466,7 +557,7 @@ impl<'a> Reader<'a> {
 
     /// Tokens after a closing `$` on the same card. Assignments there are lost in the original
     /// too, so they are an error; other text a warning.
-    fn stray(&mut self, toks: Vec<Token>) {
+    fn stray(&mut self, toks: Vec<Token<'_>>) {
         let Some(first) = toks.first() else { return };
         let text: Vec<String> = toks.iter().take(8).map(|t| t.tok.text()).collect();
         let found = excerpt(&text.join(" "));
@@ -496,19 +587,19 @@ impl<'a> Reader<'a> {
         }
     }
 
-    fn start(&mut self, name: String, line: usize, column: usize) {
+    fn start(&mut self, name: Cow<'a, str>, line: usize, column: usize) {
         self.touch_case(line);
-        let known = schema::namelist(&name).is_some();
+        let table = schema::table(&name);
         if name == "EXPR00" {
             self.diag(
                 Severity::Error,
                 (line, column),
                 Some(&name),
                 None,
-                DeckProblem::UnknownNamelist { found: name.clone() },
+                DeckProblem::UnknownNamelist { found: name.to_string() },
                 Some("experimental-data namelists are EXPR01, EXPR02, ..., one per Mach number of $FLTCON".into()),
             );
-        } else if !known {
+        } else if table.is_none() {
             let hint = schema::nearest(&name, schema::namelists().keys().map(String::as_str))
                 .map(|n| format!("did you mean ${n}?"));
             self.diag(
@@ -517,30 +608,30 @@ impl<'a> Reader<'a> {
                 Some(&name),
                 None,
                 DeckProblem::UnknownNamelist {
-                    found: name.clone(),
+                    found: name.to_string(),
                 },
                 hint,
             );
         }
+        self.body.clear();
         self.open = Some(Open {
             name,
+            table,
             line,
             column,
-            tokens: Vec::new(),
         });
     }
 
-    fn outside_line(&mut self, n: usize, text: &str) {
+    fn outside_line(&mut self, n: usize, text: &'a str) {
         let trimmed = text.trim();
         let col = column_of(text, text.len() - text.trim_start().len());
         if trimmed.starts_with(['$', '&']) {
-            let mut toks = Vec::with_capacity(lexer::capacity_hint(text));
-            lexer::lex_line(text, n, 1, &mut toks);
+            let mut toks = self.lex(text, n);
             // `$ NAME`: a blank between `$` and a namelist's name.
             if let (Some(Tok::Close), Some(Tok::Name(name))) =
                 (toks.first().map(|t| &t.tok), toks.get(1).map(|t| &t.tok))
             {
-                if schema::namelist(name).is_some() {
+                if schema::table(name).is_some() {
                     let name = name.clone();
                     let at = (toks[1].line, toks[1].column);
                     self.diag(
@@ -555,12 +646,16 @@ impl<'a> Reader<'a> {
                         Some(format!("write ${name}; read here as ${name}")),
                     );
                     self.start(name, at.0, at.1);
-                    self.feed(toks.into_iter().skip(2).collect());
+                    self.feed(toks.drain(2..));
+                    self.line_tokens = toks;
                     return;
                 }
             }
             match toks.first().map(|t| &t.tok) {
-                Some(Tok::Open(_)) => self.feed(toks),
+                Some(Tok::Open(_)) => {
+                    self.feed(toks.drain(..));
+                    self.line_tokens = toks;
+                }
                 _ => self.diag(
                     Severity::Warning,
                     (n, col),
@@ -686,7 +781,7 @@ impl<'a> Reader<'a> {
             }
             Card::Naca(a) => {
                 if let Some(old) = self.case.airfoils.iter().find(|b| b.surface == a.surface) {
-                    if old.line > 0 && self.seen.contains(&format!("NACA-{:?}", a.surface)) {
+                    if old.line > 0 && self.seen_naca.contains(&a.surface) {
                         let message = format!(
                             "a second NACA card for the {} replaces the one on line {}",
                             a.surface.name(),
@@ -702,7 +797,9 @@ impl<'a> Reader<'a> {
                         );
                     }
                 }
-                self.seen.insert(format!("NACA-{:?}", a.surface));
+                if !self.seen_naca.contains(&a.surface) {
+                    self.seen_naca.push(a.surface);
+                }
                 self.case.airfoils.retain(|b| b.surface != a.surface);
                 self.case.airfoils.push(a);
             }
@@ -722,14 +819,14 @@ impl<'a> Reader<'a> {
     }
 
     /// Reports a namelist never closed by `$`, then reads what it holds.
-    fn unterminated(&mut self, open: Open, swallowed: Vec<String>, where_to_close: &str) {
+    fn unterminated(&mut self, open: Open<'a>, swallowed: Vec<String>, where_to_close: &str) {
         self.diag(
             Severity::Error,
             (open.line, open.column),
             Some(&open.name),
             None,
             DeckProblem::UnterminatedNamelist {
-                namelist: open.name.clone(),
+                namelist: open.name.to_string(),
                 opened_line: open.line,
                 swallowed,
             },
@@ -739,208 +836,86 @@ impl<'a> Reader<'a> {
     }
 
     /// Applies a closed namelist's assignments to the current case.
-    fn close(&mut self, open: Open) {
+    fn close(&mut self, open: Open<'a>) {
         if open.name == "EXPR00" {
             return;
         }
-        let Some(spec) = schema::namelist(&open.name) else {
+        let Some(table) = open.table else {
             return;
         };
-        if !self.seen.insert(open.name.clone()) {
-            self.diag(
+        let name: &str = &open.name;
+        let nl_key = schema::key(name).expect("known namelists have short names");
+        if self.seen.contains(&nl_key) {
+            self.diags.push(
                 Severity::Note,
                 (open.line, open.column),
-                Some(&open.name),
+                Some(name),
                 None,
                 DeckProblem::NamelistRepeated {
-                    namelist: open.name.clone(),
+                    namelist: name.to_string(),
                 },
                 None,
             );
+        } else {
+            self.seen.push(nl_key);
         }
         // Symmetric and asymmetric flap data share storage in the original: reading one
         // clears the other.
-        let rival = match open.name.as_str() {
+        let rival = match name {
             "SYMFLP" => Some("ASYFLP"),
             "ASYFLP" => Some("SYMFLP"),
             _ => None,
         };
         if let Some(rival) = rival {
             if self.case.namelists.remove(rival).is_some() {
-                self.diag(
+                self.diags.push(
                     Severity::Warning,
                     (open.line, open.column),
-                    Some(&open.name),
+                    Some(name),
                     None,
                     DeckProblem::Case {
                         message: format!(
-                            "${} replaces the ${rival} read before it: the two share storage in DATCOM, one flap kind per case",
-                            open.name
+                            "${name} replaces the ${rival} read before it: the two share storage in DATCOM, one flap kind per case"
                         ),
                     },
                     None,
                 );
             }
         }
-        let (assignments, problems) = namelist::parse_body(&open.tokens);
+        if !self.case.namelists.contains_key(name) {
+            self.case
+                .namelists
+                .insert(name.to_string(), NamelistValues::new());
+        }
+        let values = self.case.namelists.get_mut(name).expect("inserted above");
+        // Assignments are applied as they are read; what they find wrong is reported after the
+        // body's syntax problems.
+        let mut found = Diags {
+            file: self.file,
+            list: Vec::new(),
+        };
+        let mut target = Target {
+            name,
+            key: nl_key,
+            table,
+            values,
+            origins: &mut self.case.origins,
+            assigned: &mut self.assigned,
+            diags: &mut found,
+        };
+        let problems = namelist::parse_body_each(&self.body, |a| target.assign(a));
         for p in problems {
-            self.diag(
+            self.diags.push(
                 Severity::Error,
                 (p.line, p.column),
-                Some(&open.name),
+                Some(name),
                 p.variable.as_deref(),
                 p.problem,
                 p.hint,
             );
         }
-        if !self.case.namelists.contains_key(&open.name) {
-            self.case
-                .namelists
-                .insert(open.name.clone(), Default::default());
-        }
-        for a in assignments {
-            self.assign(&open.name, spec, &a);
-        }
-    }
-
-    /// Applies one assignment to namelist `name` (whose schema is `spec`).
-    fn assign(&mut self, name: &str, spec: &'static NamelistSpec, a: &namelist::Assignment) {
-        let at = (a.line, a.column);
-        let written = a.name.as_str();
-        let canonical = schema::canonical(&spec.name, written);
-        let Some(var) = spec.var(canonical) else {
-            let near = schema::nearest(written, spec.vars.keys().map(String::as_str))
-                .map(|n| format!("did you mean {n}?"))
-                .or_else(|| {
-                    schema::homes(written).map(|h| format!("{written} is a variable of {h}"))
-                });
-            self.diag(
-                Severity::Error,
-                at,
-                Some(name),
-                Some(&excerpt(written)),
-                DeckProblem::UnknownVariable {
-                    namelist: name.into(),
-                    found: excerpt(written),
-                },
-                near,
-            );
-            return;
-        };
-        let start = a.index.unwrap_or(1);
-        let last = start.saturating_add(a.values.len().saturating_sub(1));
-        if last > var.len {
-            self.diag(
-                Severity::Error,
-                at,
-                Some(name),
-                Some(written),
-                DeckProblem::TooManyValues {
-                    variable: written.into(),
-                    capacity: var.len,
-                    given: a.values.len(),
-                    last_index: last,
-                },
-                None,
-            );
-        }
-        // Kind check, element by element.
-        let mut bad: Option<String> = None;
-        for lit in &a.values {
-            match (var.kind, lit) {
-                (Kind::Logical, Lit::Number { .. }) => bad = Some("a number".into()),
-                (Kind::Real | Kind::Integer, Lit::Logical(_)) => bad = Some("a logical".into()),
-                (Kind::Integer, Lit::Number { value, .. }) if value.fract() != 0.0 => {
-                    bad = Some(format!("{value}"))
-                }
-                _ => {}
-            }
-        }
-        if let Some(found) = bad {
-            let expected = match var.kind {
-                Kind::Logical => "a logical (.TRUE. or .FALSE.)",
-                Kind::Integer => "a whole number",
-                Kind::Real => "a number",
-            };
-            self.diag(
-                Severity::Error,
-                at,
-                Some(name),
-                Some(written),
-                DeckProblem::WrongKind {
-                    variable: written.into(),
-                    expected: expected.into(),
-                    found,
-                },
-                None,
-            );
-            return;
-        }
-        let end = last.min(var.len);
-        let assigned = match self.assigned.get_mut(name) {
-            Some(a) => a,
-            None => self.assigned.entry(name.to_string()).or_default(),
-        };
-        let reassigned = (start..=end).any(|i| !assigned.insert((var.name.as_str(), i)));
-        if reassigned {
-            self.diag(
-                Severity::Warning,
-                at,
-                Some(name),
-                Some(written),
-                DeckProblem::Reassigned {
-                    variable: written.into(),
-                },
-                None,
-            );
-        }
-        let values = match self.case.namelists.get_mut(name) {
-            Some(v) => v,
-            None => self.case.namelists.entry(name.to_string()).or_default(),
-        };
-        let entry = match values.get_mut(&var.name) {
-            Some(e) => e,
-            None => values
-                .entry(var.name.clone())
-                .or_insert_with(|| match var.kind {
-                    Kind::Logical => Value::Logicals(Vec::new()),
-                    Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
-                }),
-        };
-        // The elements written reach index `end` at most: room for them at once.
-        match &mut *entry {
-            Value::Numbers(v) => v.reserve(end.saturating_sub(v.len())),
-            Value::Logicals(v) => v.reserve(end.saturating_sub(v.len())),
-        }
-        for (k, lit) in a
-            .values
-            .iter()
-            .enumerate()
-            .take(end.saturating_sub(start) + 1)
-        {
-            let i = start + k;
-            match (&mut *entry, lit) {
-                (Value::Numbers(v), Lit::Number { value, .. }) => {
-                    if v.len() < i {
-                        v.resize(i, None);
-                    }
-                    v[i - 1] = Some(*value);
-                }
-                (Value::Logicals(v), Lit::Logical(b)) => {
-                    if v.len() < i {
-                        v.resize(i, None);
-                    }
-                    v[i - 1] = Some(*b);
-                }
-                // Kinds were checked above.
-                _ => {}
-            }
-        }
-        let mut key = String::with_capacity(name.len() + 1 + var.name.len());
-        key.push_str(name);
-        key.push('.');
-        key.push_str(&var.name);
-        self.case.origins.insert(key, (a.line, a.column));
+        self.diags.list.append(&mut found.list);
+        self.body.clear();
     }
 
     /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...), in
@@ -964,9 +939,10 @@ impl<'a> Reader<'a> {
         let mut found = Vec::new();
         let nmach = self.case.scalar("FLTCON", "NMACH");
         for (nl, values) in &self.case.namelists {
-            let Some(spec) = schema::namelist(nl) else {
+            let Some(table) = schema::table(nl) else {
                 continue;
             };
+            let nl_key = schema::key(nl).expect("known namelists have short names");
             if let (Some(nn), Some(nmach)) = (nl.strip_prefix("EXPR"), nmach) {
                 if nn.parse::<f64>().is_ok_and(|k| k > nmach) {
                     found.push((
@@ -983,7 +959,7 @@ impl<'a> Reader<'a> {
                 }
             }
             for (name, value) in values {
-                let Some(var) = spec.var(name) else { continue };
+                let Some(var) = table.var(name) else { continue };
                 let Some(count_var) = &var.count else {
                     continue;
                 };
@@ -1019,10 +995,14 @@ impl<'a> Reader<'a> {
                     };
                     found.push(mismatch(nl, name, count_var, count, given, hint));
                 } else if (given as f64) > count
-                    && self.assigned.get(nl).is_some_and(|a| {
-                        a.iter()
-                            .any(|(v, i)| *v == var.name.as_str() && (*i as f64) > count)
-                    })
+                    && schema::key(&var.name)
+                        .and_then(|v| {
+                            let k = (nl_key, v);
+                            let i = self.assigned.binary_search_by_key(&k, |(ak, _)| *ak);
+                            i.ok().map(|i| self.assigned[i].1)
+                        })
+                        // Elements after the first `count` (a whole number up to the length).
+                        .is_some_and(|set| set >> (count as u32 + 1) != 0)
                 {
                     // Values beyond the count written in this case (saved data may hold more
                     // values than a later case asks for on purpose).
@@ -1036,8 +1016,7 @@ impl<'a> Reader<'a> {
         for (nl, var, severity, problem, hint) in found {
             let at = var
                 .as_ref()
-                .and_then(|v| self.case.origins.get(&format!("{nl}.{v}")))
-                .copied()
+                .and_then(|v| self.case.origins.get(&nl, v))
                 .unwrap_or((self.case.first_line, 0));
             self.diag(severity, at, Some(&nl), var.as_deref(), problem, hint);
         }
@@ -1065,6 +1044,7 @@ impl<'a> Reader<'a> {
                 self.carried = None;
                 self.assigned.clear();
                 self.seen.clear();
+                self.seen_naca.clear();
             }
             return;
         }
@@ -1082,6 +1062,163 @@ impl<'a> Reader<'a> {
         self.cases.push(done);
         self.assigned.clear();
         self.seen.clear();
+        self.seen_naca.clear();
+    }
+}
+
+/// A namelist of the current case that assignments are applied to, with the reader's records
+/// that assignments update.
+struct Target<'r, 'd> {
+    /// The namelist's name (upper case) and its [`schema::key`].
+    name: &'r str,
+    key: u64,
+    table: &'static Table,
+    values: &'r mut NamelistValues,
+    origins: &'r mut Origins,
+    assigned: &'r mut Assigned,
+    diags: &'r mut Diags<'d>,
+}
+
+impl Target<'_, '_> {
+    /// Applies one assignment.
+    fn assign(&mut self, a: &namelist::Assignment) {
+        let name = self.name;
+        let at = (a.line, a.column);
+        let written: &str = &a.name;
+        let canonical = schema::canonical(&self.table.spec.name, written);
+        let Some(var) = self.table.var(canonical) else {
+            let near = schema::nearest(written, self.table.spec.vars.keys().map(String::as_str))
+                .map(|n| format!("did you mean {n}?"))
+                .or_else(|| {
+                    schema::homes(written).map(|h| format!("{written} is a variable of {h}"))
+                });
+            self.diags.push(
+                Severity::Error,
+                at,
+                Some(name),
+                Some(&excerpt(written)),
+                DeckProblem::UnknownVariable {
+                    namelist: name.into(),
+                    found: excerpt(written),
+                },
+                near,
+            );
+            return;
+        };
+        let start = a.index.unwrap_or(1);
+        let last = start.saturating_add(a.values.len().saturating_sub(1));
+        if last > var.len {
+            self.diags.push(
+                Severity::Error,
+                at,
+                Some(name),
+                Some(written),
+                DeckProblem::TooManyValues {
+                    variable: written.into(),
+                    capacity: var.len,
+                    given: a.values.len(),
+                    last_index: last,
+                },
+                None,
+            );
+        }
+        // Kind check, element by element: the last element of a wrong kind is reported.
+        let bad = a.values.iter().rev().find(|lit| match (var.kind, lit) {
+            (Kind::Logical, Lit::Number { .. }) => true,
+            (Kind::Real | Kind::Integer, Lit::Logical(_)) => true,
+            (Kind::Integer, Lit::Number { value, .. }) => value.fract() != 0.0,
+            _ => false,
+        });
+        if let Some(bad) = bad {
+            let found = match bad {
+                Lit::Logical(_) => "a logical".to_string(),
+                Lit::Number { value, .. } if var.kind == Kind::Integer => format!("{value}"),
+                Lit::Number { .. } => "a number".to_string(),
+            };
+            let expected = match var.kind {
+                Kind::Logical => "a logical (.TRUE. or .FALSE.)",
+                Kind::Integer => "a whole number",
+                Kind::Real => "a number",
+            };
+            self.diags.push(
+                Severity::Error,
+                at,
+                Some(name),
+                Some(written),
+                DeckProblem::WrongKind {
+                    variable: written.into(),
+                    expected: expected.into(),
+                    found,
+                },
+                None,
+            );
+            return;
+        }
+        let end = last.min(var.len);
+        let var_key = schema::key(&var.name).expect("variable names are short");
+        let set = sorted_entry(self.assigned, (self.key, var_key));
+        // Recorded up to the first element assigned before, as a search that stops there.
+        let mut reassigned = false;
+        for i in start..=end {
+            let bit = 1u128 << i;
+            if *set & bit != 0 {
+                reassigned = true;
+                break;
+            }
+            *set |= bit;
+        }
+        if reassigned {
+            self.diags.push(
+                Severity::Warning,
+                at,
+                Some(name),
+                Some(written),
+                DeckProblem::Reassigned {
+                    variable: written.into(),
+                },
+                None,
+            );
+        }
+        let entry = match self.values.get_mut(&var.name) {
+            Some(e) => e,
+            None => self
+                .values
+                .entry(var.name.clone())
+                .or_insert_with(|| match var.kind {
+                    Kind::Logical => Value::Logicals(Vec::new()),
+                    Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
+                }),
+        };
+        // The elements written reach index `end` at most: room for them at once.
+        match &mut *entry {
+            Value::Numbers(v) => v.reserve(end.saturating_sub(v.len())),
+            Value::Logicals(v) => v.reserve(end.saturating_sub(v.len())),
+        }
+        for (k, lit) in a
+            .values
+            .iter()
+            .enumerate()
+            .take(end.saturating_sub(start) + 1)
+        {
+            let i = start + k;
+            match (&mut *entry, lit) {
+                (Value::Numbers(v), Lit::Number { value, .. }) => {
+                    if v.len() < i {
+                        v.resize(i, None);
+                    }
+                    v[i - 1] = Some(*value);
+                }
+                (Value::Logicals(v), Lit::Logical(b)) => {
+                    if v.len() < i {
+                        v.resize(i, None);
+                    }
+                    v[i - 1] = Some(*b);
+                }
+                // Kinds were checked above.
+                _ => {}
+            }
+        }
+        self.origins.insert_keys((self.key, var_key), at);
     }
 }
 
@@ -1099,13 +1236,19 @@ use cards::parse_card;
 pub fn read(text: &str, file: &str) -> RawDeck {
     let reader = Reader {
         file,
-        diags: Vec::new(),
+        diags: Diags {
+            file,
+            list: Vec::new(),
+        },
         cases: Vec::new(),
         case: RawCase::default(),
-        assigned: BTreeMap::new(),
-        seen: BTreeSet::new(),
+        assigned: Assigned::new(),
+        seen: Vec::new(),
+        seen_naca: Vec::new(),
         carried: None,
         open: None,
+        body: Vec::new(),
+        line_tokens: Vec::new(),
         lines: split_lines(text),
     };
     reader.run()

@@ -5,6 +5,8 @@
 //! `n*value`, logicals `.TRUE.`/`.FALSE.` (also `T`/`F`). The parser never gives up: after a
 //! problem it skips to the next assignment and goes on, so every problem is reported.
 
+use std::borrow::Cow;
+
 use super::lexer::{Tok, Token};
 use crate::error::DeckProblem;
 
@@ -17,8 +19,9 @@ pub enum Lit {
 
 /// One `NAME(index) = values` assignment, repeat counts expanded.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Assignment {
-    pub name: String,
+pub struct Assignment<'t> {
+    /// The variable as written (upper case).
+    pub name: Cow<'t, str>,
     /// 1-based starting index when written `NAME(i)`.
     pub index: Option<usize>,
     pub values: Vec<Lit>,
@@ -41,8 +44,8 @@ const MAX_REPEAT: usize = 1000;
 /// Largest array index accepted in `NAME(i)`; more than any DATCOM array holds.
 const MAX_INDEX: f64 = 1000.0;
 
-struct Parser<'a> {
-    toks: &'a [Token],
+struct Parser<'s, 't> {
+    toks: &'s [Token<'t>],
     pos: usize,
     problems: Vec<BodyProblem>,
 }
@@ -55,8 +58,8 @@ fn is_logical_name(n: &str) -> Option<bool> {
     }
 }
 
-impl<'a> Parser<'a> {
-    fn peek(&self, k: usize) -> Option<&'a Token> {
+impl<'s, 't> Parser<'s, 't> {
+    fn peek(&self, k: usize) -> Option<&'s Token<'t>> {
         self.toks.get(self.pos + k)
     }
 
@@ -77,7 +80,7 @@ impl<'a> Parser<'a> {
     }
 
     /// Reports that `expected` was wanted where the cursor's token (or the end) stands.
-    fn expected_here(&mut self, fallback: &'a Token, variable: Option<&str>, expected: String) {
+    fn expected_here(&mut self, fallback: &'s Token<'t>, variable: Option<&str>, expected: String) {
         let at = self.peek(0).unwrap_or(fallback);
         let found = self
             .peek(0)
@@ -110,16 +113,20 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn parse(&mut self) -> Vec<Assignment> {
-        let mut out = Vec::new();
+    /// Reads every assignment, handing each to `each`; the vector of values is reused from one
+    /// assignment to the next.
+    fn parse(&mut self, each: &mut dyn FnMut(&Assignment<'t>)) {
+        let mut values = Vec::new();
         while let Some(t) = self.peek(0) {
             match &t.tok {
                 Tok::Comma => {
                     self.pos += 1;
                 }
                 Tok::Name(_) if self.starts_assignment(0) => {
-                    if let Some(a) = self.assignment() {
-                        out.push(a);
+                    if let Some(a) = self.assignment(&mut values) {
+                        each(&a);
+                        values = a.values;
+                        values.clear();
                     }
                 }
                 other => {
@@ -138,10 +145,10 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        out
     }
 
-    fn assignment(&mut self) -> Option<Assignment> {
+    /// One assignment; its values are read into `values` (empty), which it takes.
+    fn assignment(&mut self, values: &mut Vec<Lit>) -> Option<Assignment<'t>> {
         let head = self.peek(0)?;
         let Tok::Name(name) = &head.tok else {
             return None;
@@ -192,11 +199,11 @@ impl<'a> Parser<'a> {
                 return None;
             }
         }
-        let values = self.values(name, head);
+        self.values(name, head, values);
         Some(Assignment {
             name: name.clone(),
             index,
-            values,
+            values: std::mem::take(values),
             line: head.line,
             column: head.column,
         })
@@ -282,22 +289,22 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn values(&mut self, name: &str, head: &'a Token) -> Vec<Lit> {
-        let mut out = Vec::new();
-        if !self.item(name, &mut out) {
+    /// Reads the value list of `name` into `out`.
+    fn values(&mut self, name: &str, head: &'s Token<'t>, out: &mut Vec<Lit>) {
+        if !self.item(name, out) {
             let at = self.peek(0).unwrap_or(head);
             self.expected_here(at, Some(name), format!("a value for {name}"));
             self.recover();
-            return out;
+            return;
         }
         loop {
             let Some(t) = self.peek(0) else {
-                return out;
+                return;
             };
             match &t.tok {
                 Tok::Comma => {
                     if self.starts_assignment(1) || self.peek(1).is_none() {
-                        return out;
+                        return;
                     }
                     if matches!(self.peek(1).map(|t| &t.tok), Some(Tok::Comma)) {
                         // `a,,b` is a null value in Fortran namelist; DATCOM decks do not use it.
@@ -314,21 +321,21 @@ impl<'a> Parser<'a> {
                         continue;
                     }
                     self.pos += 1;
-                    if !self.item(name, &mut out) {
+                    if !self.item(name, out) {
                         self.expected_here(t, Some(name), format!("a value for {name}"));
                         self.recover();
-                        return out;
+                        return;
                     }
                 }
                 // The end of a card separates items as a comma does (the original's reader).
                 _ if self.pos > 0 && self.toks[self.pos - 1].line != t.line => {
                     if self.starts_assignment(0) {
-                        return out;
+                        return;
                     }
-                    if !self.item(name, &mut out) {
+                    if !self.item(name, out) {
                         self.expected_here(t, Some(name), "`,` or the next assignment".to_string());
                         self.recover();
-                        return out;
+                        return;
                     }
                 }
                 Tok::Name(next) if self.starts_assignment(0) => {
@@ -336,11 +343,11 @@ impl<'a> Parser<'a> {
                         t,
                         Some(name),
                         DeckProblem::MissingComma {
-                            found: next.clone(),
+                            found: next.to_string(),
                         },
                         Some(format!("write `,` after the value of {name}")),
                     );
-                    return out;
+                    return;
                 }
                 Tok::Number { .. } | Tok::Logical(_) => {
                     // Blank-separated values: Fortran list input allows them.
@@ -352,14 +359,14 @@ impl<'a> Parser<'a> {
                         },
                         Some("separate the values with commas".into()),
                     );
-                    if !self.item(name, &mut out) {
+                    if !self.item(name, out) {
                         self.pos += 1;
                     }
                 }
                 _ => {
                     self.expected_here(t, Some(name), "`,` or the next assignment".to_string());
                     self.recover();
-                    return out;
+                    return;
                 }
             }
         }
@@ -367,14 +374,25 @@ impl<'a> Parser<'a> {
 }
 
 /// Parses the tokens of one namelist body (without its `$NAME` and closing `$`).
-pub fn parse_body(toks: &[Token]) -> (Vec<Assignment>, Vec<BodyProblem>) {
+pub fn parse_body<'t>(toks: &[Token<'t>]) -> (Vec<Assignment<'t>>, Vec<BodyProblem>) {
+    let mut out = Vec::new();
+    let problems = parse_body_each(toks, |a| out.push(a.clone()));
+    (out, problems)
+}
+
+/// Parses the tokens of one namelist body as [`parse_body`] does, handing each assignment to
+/// `each` in order as it is read instead of collecting them; returns the problems found.
+pub fn parse_body_each<'t>(
+    toks: &[Token<'t>],
+    mut each: impl FnMut(&Assignment<'t>),
+) -> Vec<BodyProblem> {
     let mut p = Parser {
         toks,
         pos: 0,
         problems: Vec::new(),
     };
-    let out = p.parse();
-    (out, p.problems)
+    p.parse(&mut each);
+    p.problems
 }
 
 #[cfg(test)]
@@ -382,7 +400,7 @@ mod tests {
     use super::*;
     use crate::deck::lexer::lex_line;
 
-    fn parse(s: &str) -> (Vec<Assignment>, Vec<BodyProblem>) {
+    fn parse(s: &str) -> (Vec<Assignment<'_>>, Vec<BodyProblem>) {
         let mut toks = Vec::new();
         for (i, l) in s.lines().enumerate() {
             lex_line(l, i + 1, 1, &mut toks);
@@ -447,7 +465,7 @@ mod tests {
         let (a, p) = parse("XW=1.0, @@ ZW=2.0, XH=3.0");
         assert_eq!(p.len(), 1, "{p:?}");
         assert_eq!(
-            a.iter().map(|a| a.name.as_str()).collect::<Vec<_>>(),
+            a.iter().map(|a| a.name.as_ref()).collect::<Vec<_>>(),
             ["XW", "ZW", "XH"]
         );
     }

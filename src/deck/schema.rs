@@ -120,14 +120,83 @@ pub fn namelists() -> &'static BTreeMap<String, NamelistSpec> {
     SCHEMA.get_or_init(load)
 }
 
+/// A name of at most eight bytes as one integer, for lookups that compare integers instead of
+/// strings. Bytes are packed first to last into the high to low end, padded with zeros, so that
+/// keys order as their names do. `None` for longer names and names holding a NUL byte, which no
+/// namelist or variable has.
+pub(crate) fn key(name: &str) -> Option<u64> {
+    let b = name.as_bytes();
+    if b.len() > 8 {
+        return None;
+    }
+    let mut k = 0u64;
+    for (i, c) in b.iter().enumerate() {
+        if *c == 0 {
+            return None;
+        }
+        k |= u64::from(*c) << (56 - 8 * i);
+    }
+    Some(k)
+}
+
+/// A namelist's schema with its variables in a table sorted by [`key`], for the reader's many
+/// lookups.
+pub(crate) struct Table {
+    pub spec: &'static NamelistSpec,
+    vars: Vec<(u64, &'static VarSpec)>,
+}
+
+impl Table {
+    /// The variable called `name` (upper case), as [`NamelistSpec::var`].
+    pub fn var(&self, name: &str) -> Option<&'static VarSpec> {
+        let k = key(name)?;
+        self.vars
+            .binary_search_by_key(&k, |(vk, _)| *vk)
+            .ok()
+            .map(|i| self.vars[i].1)
+    }
+}
+
+/// Every namelist's [`Table`], sorted by the key of its name.
+fn tables() -> &'static [(u64, Table)] {
+    static TABLES: OnceLock<Vec<(u64, Table)>> = OnceLock::new();
+    TABLES.get_or_init(|| {
+        let mut out: Vec<(u64, Table)> = namelists()
+            .values()
+            .map(|spec| {
+                let mut vars: Vec<(u64, &'static VarSpec)> = spec
+                    .vars
+                    .values()
+                    .map(|v| (key(&v.name).expect("variable names are short"), v))
+                    .collect();
+                vars.sort_by_key(|(k, _)| *k);
+                let k = key(&spec.name).expect("namelist names are short");
+                (k, Table { spec, vars })
+            })
+            .collect();
+        out.sort_by_key(|(k, _)| *k);
+        out
+    })
+}
+
+/// The [`Table`] of the namelist called `name`, as [`namelist`].
+pub(crate) fn table(name: &str) -> Option<&'static Table> {
+    let name = match name.strip_prefix("EXPR") {
+        Some(nn) if nn.len() == 2 && nn.bytes().all(|c| c.is_ascii_digit()) => "EXPRnn",
+        _ => name,
+    };
+    let k = key(name)?;
+    let tables = tables();
+    tables
+        .binary_search_by_key(&k, |(tk, _)| *tk)
+        .ok()
+        .map(|i| &tables[i].1)
+}
+
 /// The namelist called `name` (upper case), if Digital DATCOM has one. The experimental-data
 /// namelists `EXPR01`, `EXPR02`, ... (one per Mach number) share the schema `EXPRnn`.
 pub fn namelist(name: &str) -> Option<&'static NamelistSpec> {
-    let key = match name.strip_prefix("EXPR") {
-        Some(nn) if nn.len() == 2 && nn.chars().all(|c| c.is_ascii_digit()) => "EXPRnn",
-        _ => name,
-    };
-    namelists().get(key)
+    table(name).map(|t| t.spec)
 }
 
 /// Namelists of Missile DATCOM that Digital DATCOM does not have: their presence marks a deck
@@ -137,36 +206,19 @@ pub const MISSILE_NAMELISTS: &[&str] = &[
     "DEFLCT", "INERTIA", "SYMCS",
 ];
 
-/// Names that share storage with another in the original (EQUIVALENCE): (namelist, alias,
-/// variable). An assignment to the alias is an assignment to the variable.
-const ALIASES: &[(&str, &str, &str)] = &[
-    ("FLTCON", "ALPHA", "ALSCHD"),
-    ("WGSCHR", "CMO", "CM0"),
-    ("WGSCHR", "CMOT", "CM0T"),
-    ("WGSCHR", "CLAM0", "CLAMO"),
-    ("WGSCHR", "ALPHA0", "ALPHAO"),
-    ("HTSCHR", "CMO", "CM0"),
-    ("HTSCHR", "CMOT", "CM0T"),
-    ("HTSCHR", "CLAM0", "CLAMO"),
-    ("HTSCHR", "ALPHA0", "ALPHAO"),
-    ("VTSCHR", "CMO", "CM0"),
-    ("VTSCHR", "CMOT", "CM0T"),
-    ("VTSCHR", "CLAM0", "CLAMO"),
-    ("VTSCHR", "ALPHA0", "ALPHAO"),
-    ("VFSCHR", "CMO", "CM0"),
-    ("VFSCHR", "CMOT", "CM0T"),
-    ("VFSCHR", "CLAM0", "CLAMO"),
-    ("VFSCHR", "ALPHA0", "ALPHAO"),
-    ("SYMFLP", "SCHD", "SCHA"),
-];
-
-/// The variable an assignment to `var` in `namelist` sets (itself, unless it is an alias).
+/// The variable an assignment to `var` in `namelist` sets: itself, unless it is an alias, a name
+/// that shares storage with another in the original (EQUIVALENCE).
 pub fn canonical<'a>(namelist: &str, var: &'a str) -> &'a str {
-    ALIASES
-        .iter()
-        // The variable first: aliases are few and the namelists' names all six letters long.
-        .find(|(nl, alias, _)| *alias == var && *nl == namelist)
-        .map_or(var, |(_, _, v)| v)
+    let section = matches!(namelist, "WGSCHR" | "HTSCHR" | "VTSCHR" | "VFSCHR");
+    match var {
+        "ALPHA" if namelist == "FLTCON" => "ALSCHD",
+        "CMO" if section => "CM0",
+        "CMOT" if section => "CM0T",
+        "CLAM0" if section => "CLAMO",
+        "ALPHA0" if section => "ALPHAO",
+        "SCHD" if namelist == "SYMFLP" => "SCHA",
+        _ => var,
+    }
 }
 
 /// The namelists that have a variable called `var`, as `$NAME` joined by commas.
@@ -231,5 +283,41 @@ mod tests {
             namelist("SYNTHS").unwrap().var("VERTUP").unwrap().kind,
             Kind::Logical
         );
+    }
+
+    #[test]
+    fn aliases() {
+        assert_eq!(canonical("FLTCON", "ALPHA"), "ALSCHD");
+        assert_eq!(canonical("BODY", "ALPHA"), "ALPHA");
+        for nl in ["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"] {
+            assert_eq!(canonical(nl, "CMO"), "CM0");
+            assert_eq!(canonical(nl, "CMOT"), "CM0T");
+            assert_eq!(canonical(nl, "CLAM0"), "CLAMO");
+            assert_eq!(canonical(nl, "ALPHA0"), "ALPHAO");
+            assert_eq!(canonical(nl, "ALPHA"), "ALPHA");
+        }
+        assert_eq!(canonical("SYMFLP", "SCHD"), "SCHA");
+        assert_eq!(canonical("ASYFLP", "SCHD"), "SCHD");
+        assert_eq!(canonical("FLTCON", "CMO"), "CMO");
+    }
+
+    #[test]
+    fn tables_find_what_the_maps_hold() {
+        for (name, spec) in namelists() {
+            let t = table(name).unwrap();
+            assert_eq!(t.spec, spec);
+            for (v, var) in &spec.vars {
+                assert_eq!(t.var(v), Some(var));
+                // The reader keeps which elements were assigned in a 128-bit set.
+                assert!(var.len < 128, "{name} {v}");
+            }
+            assert_eq!(t.var("NOSUCHVAR"), None);
+        }
+        assert_eq!(namelist("EXPR07").unwrap().name, "EXPRnn");
+        assert_eq!(namelist("EXPR7"), None);
+        assert_eq!(namelist("FLTCON\0"), None);
+        assert_eq!(namelist("FLTCONXYZ"), None);
+        assert_eq!(key("AB"), Some(0x4142 << 48));
+        assert!(key("AB") < key("ABC") && key("ABC") < key("ABD") && key("AZ") < key("B"));
     }
 }
