@@ -1,6 +1,6 @@
 //! The Digital DATCOM deck reader: text to cases of namelist values and control cards.
 //!
-//! Reading is in three layers: [`lexer`] splits namelist text into tokens; [`namelist`]
+//! Reading is in three layers: [`lexer`] (nom) splits namelist text into tokens; [`namelist`]
 //! reads assignments from the tokens of one namelist body; this module walks the deck line by
 //! line, sorts lines into control cards, namelists and comments, applies assignments to the
 //! schema of each namelist, and groups everything into cases. Every problem becomes a
