@@ -1,10 +1,17 @@
-//! Lexemes of namelist text, one physical line at a time.
+//! Lexemes of namelist text, recognised with nom, one physical line at a time.
 //!
 //! The grammar above lexemes (assignments, value lists, recovery) is in `namelist.rs`: it needs
 //! look-ahead across lines and error recovery, which is clearer written over tokens. Tokens
 //! borrow their text from the line: reading a deck copies no names or numbers.
 
 use std::borrow::Cow;
+
+use nom::branch::alt;
+use nom::bytes::complete::{tag_no_case, take_while, take_while_m_n};
+use nom::character::complete::{char, digit0, digit1, one_of};
+use nom::combinator::{consumed, opt, recognize};
+use nom::sequence::{pair, tuple};
+use nom::IResult;
 
 /// A lexeme of namelist text.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,87 +91,71 @@ pub fn upper(s: &str) -> Cow<'_, str> {
     }
 }
 
-/// Length in bytes of the run of ASCII digits at the start of `b`.
-fn digits(b: &[u8]) -> usize {
-    b.iter().take_while(|c| c.is_ascii_digit()).count()
+fn is_name_start(c: char) -> bool {
+    c.is_ascii_alphabetic()
 }
 
-/// Length of a name (a letter, then letters, digits and `_`) at the start of `b`; 0 for none.
-fn name_len(b: &[u8]) -> usize {
-    match b.first() {
-        Some(c) if c.is_ascii_alphabetic() => {
-            1 + b[1..]
-                .iter()
-                .take_while(|c| c.is_ascii_alphanumeric() || **c == b'_')
-                .count()
-        }
-        _ => 0,
-    }
+fn is_name_char(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
 }
 
-/// `$NAME`, `$END` or a bare `$` (and the same with `&`); `i` starts with the sign.
-fn open_or_close(i: &str) -> (usize, Tok<'_>) {
-    let n = name_len(&i.as_bytes()[1..]);
-    let name = &i[1..1 + n];
-    if n == 0 || name.eq_ignore_ascii_case("END") {
-        (1 + n, Tok::Close)
-    } else {
-        (1 + n, Tok::Open(upper(name)))
+/// A name: a letter, then letters, digits and `_`.
+fn name(i: &str) -> IResult<&str, &str> {
+    recognize(pair(
+        take_while_m_n(1, 1, is_name_start),
+        take_while(is_name_char),
+    ))(i)
+}
+
+/// `$NAME`, `$END` or a bare `$` (and the same with `&`).
+fn open_or_close(i: &str) -> IResult<&str, Tok<'_>> {
+    let (rest, _) = one_of("$&")(i)?;
+    match name(rest) {
+        Ok((after, n)) if n.eq_ignore_ascii_case("END") => Ok((after, Tok::Close)),
+        Ok((after, n)) => Ok((after, Tok::Open(upper(n)))),
+        Err(_) => Ok((rest, Tok::Close)),
     }
 }
 
 /// `.TRUE.`, `.FALSE.`, `.T.` or `.F.`, any case.
-fn logical(b: &[u8]) -> Option<(usize, Tok<'static>)> {
-    if b.len() < 3 || !b[1].is_ascii_alphabetic() {
-        return None;
-    }
-    [&b".TRUE."[..], b".FALSE.", b".T.", b".F."]
-        .iter()
-        .find(|word| b.len() >= word.len() && b[..word.len()].eq_ignore_ascii_case(word))
-        .map(|word| (word.len(), Tok::Logical(word[1] == b'T')))
+fn logical(i: &str) -> IResult<&str, Tok<'_>> {
+    let (rest, word) = alt((
+        tag_no_case(".TRUE."),
+        tag_no_case(".FALSE."),
+        tag_no_case(".T."),
+        tag_no_case(".F."),
+    ))(i)?;
+    let value = word.as_bytes()[1].eq_ignore_ascii_case(&b'T');
+    Ok((rest, Tok::Logical(value)))
+}
+
+fn exponent(i: &str) -> IResult<&str, &str> {
+    recognize(tuple((one_of("eEdD"), opt(one_of("+-")), digit1)))(i)
+}
+
+fn mantissa(i: &str) -> IResult<&str, &str> {
+    alt((
+        recognize(pair(digit1, opt(pair(char('.'), digit0)))),
+        recognize(pair(char('.'), digit1)),
+    ))(i)
 }
 
 /// A number: optional sign, digits with an optional `.` and fraction (or `.` and a fraction),
 /// optional exponent `E`/`D` with optional sign and digits.
-fn number(i: &str) -> Option<(usize, Tok<'_>)> {
-    let b = i.as_bytes();
-    let mut k = usize::from(matches!(b.first(), Some(b'+' | b'-')));
-    let whole = digits(&b[k..]);
-    let mut dot = false;
-    if whole > 0 {
-        k += whole;
-        if b.get(k) == Some(&b'.') {
-            dot = true;
-            k += 1 + digits(&b[k + 1..]);
-        }
-    } else if b.get(k) == Some(&b'.') && digits(&b[k + 1..]) > 0 {
-        dot = true;
-        k += 1 + digits(&b[k + 1..]);
-    } else {
-        return None;
-    }
-    let mut exponent = None;
-    if let Some(e @ (b'e' | b'E' | b'd' | b'D')) = b.get(k) {
-        let sign = usize::from(matches!(b.get(k + 1), Some(b'+' | b'-')));
-        let n = digits(&b[k + 1 + sign..]);
-        if n > 0 {
-            exponent = Some(*e);
-            k += 1 + sign + n;
-        }
-    }
-    let text = &i[..k];
-    let integer = !dot && exponent.is_none();
-    // The text holds only digits, one dot, sign and exponent, which f64 parses once a Fortran
-    // `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the parser
-    // reports it.
-    let parsed = if let Some(b'd' | b'D') = exponent {
-        text.replace(['d', 'D'], "E").parse::<f64>()
-    } else {
-        text.parse::<f64>()
+fn number(i: &str) -> IResult<&str, Tok<'_>> {
+    let (rest, (text, exp)) = consumed(tuple((opt(one_of("+-")), mantissa, opt(exponent))))(i)?;
+    let (_, mantissa_text, exp) = exp;
+    let integer = exp.is_none() && !mantissa_text.contains('.');
+    // `number` accepts only digits, one dot, sign and exponent, which f64 parses once a
+    // Fortran `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the
+    // parser reports it.
+    let parsed = match exp {
+        Some(e) if e.starts_with(['d', 'D']) => text.replace(['d', 'D'], "E").parse::<f64>(),
+        _ => text.parse::<f64>(),
     };
     let value = parsed.unwrap_or(f64::INFINITY);
-    Some((
-        k,
+    Ok((
+        rest,
         Tok::Number {
             value,
             integer,
@@ -173,28 +164,40 @@ fn number(i: &str) -> Option<(usize, Tok<'_>)> {
     ))
 }
 
-/// One lexeme and its length in bytes. The first character decides which lexemes can start
-/// here; anything that starts none is one character of `Other`.
-fn token(i: &str) -> (usize, Tok<'_>) {
-    let b = i.as_bytes();
-    let found = match b[0] {
-        b'$' | b'&' => Some(open_or_close(i)),
-        b'.' => logical(b).or_else(|| number(i)),
-        b'0'..=b'9' | b'+' | b'-' => number(i),
-        b'(' => Some((1, Tok::LParen)),
-        b')' => Some((1, Tok::RParen)),
-        b',' => Some((1, Tok::Comma)),
-        b'=' => Some((1, Tok::Equals)),
-        b'*' => Some((1, Tok::Star)),
-        _ => match name_len(b) {
-            0 => None,
-            n => Some((n, Tok::Name(upper(&i[..n])))),
-        },
+fn punct(i: &str) -> IResult<&str, Tok<'_>> {
+    let (rest, c) = one_of("(),=*")(i)?;
+    let t = match c {
+        '(' => Tok::LParen,
+        ')' => Tok::RParen,
+        ',' => Tok::Comma,
+        '=' => Tok::Equals,
+        _ => Tok::Star,
     };
-    found.unwrap_or_else(|| {
-        let c = i.chars().next().unwrap_or_default();
-        (c.len_utf8(), Tok::Other(c))
-    })
+    Ok((rest, t))
+}
+
+fn name_token(i: &str) -> IResult<&str, Tok<'_>> {
+    name(i).map(|(r, n)| (r, Tok::Name(upper(n))))
+}
+
+/// One lexeme and its length in bytes. The first character decides which lexemes can start
+/// here (the same choice as trying open/close, logical, number, punctuation and name in turn,
+/// without the failed tries); anything that starts none is one character of `Other`.
+fn token(i: &str) -> (usize, Tok<'_>) {
+    let found = match i.as_bytes()[0] {
+        b'$' | b'&' => open_or_close(i),
+        b'.' => alt((logical, number))(i),
+        b'0'..=b'9' | b'+' | b'-' => number(i),
+        b'(' | b')' | b',' | b'=' | b'*' => punct(i),
+        _ => name_token(i),
+    };
+    match found {
+        Ok((rest, tok)) => (i.len() - rest.len(), tok),
+        Err(_) => {
+            let c = i.chars().next().unwrap_or_default();
+            (c.len_utf8(), Tok::Other(c))
+        }
+    }
 }
 
 /// A capacity for the tokens of `text` that most lines do not outgrow (values and their commas
