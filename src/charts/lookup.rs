@@ -85,7 +85,7 @@ impl Walk<'_> {
                 (lo.min(*v), hi.max(*v))
             });
         let seen = self.warnings.iter().any(|w| {
-            w.variable == axis.shared_symbol
+            w.variable == axis.symbol
                 && w.value == value
                 && w.min == min
                 && w.max == max
@@ -93,8 +93,8 @@ impl Walk<'_> {
         });
         if !seen {
             self.warnings.push(ChartWarning {
-                chart: self.chart.shared_id.clone(),
-                variable: axis.shared_symbol.clone(),
+                chart: self.chart.id.clone(),
+                variable: axis.symbol.clone(),
                 value,
                 min,
                 max,
@@ -173,7 +173,7 @@ impl Chart {
             return Lookup {
                 value: None,
                 warnings: vec![ChartWarning {
-                    chart: self.shared_id.clone(),
+                    chart: self.id.clone(),
                     variable: self
                         .axes
                         .iter()

@@ -46,14 +46,12 @@ pub enum Outside {
 /// An independent variable of a chart.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Axis {
-    pub symbol: String,
+    /// Shared with the warnings that name it.
+    pub symbol: Name,
     pub name: String,
     pub unit: String,
     pub below: Outside,
     pub above: Outside,
-    /// `symbol` shared with the warnings that name it.
-    #[serde(skip)]
-    pub(crate) shared_symbol: Name,
 }
 
 /// The dependent variable.
@@ -87,7 +85,8 @@ pub enum Node {
 /// A digitised chart.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Chart {
-    pub id: String,
+    /// Shared with the warnings that name the chart.
+    pub id: Name,
     pub title: String,
     /// Axes from the outermost (first lookup argument) to the innermost (last).
     pub axes: Vec<Axis>,
@@ -100,9 +99,6 @@ pub struct Chart {
     pub data: Node,
     /// Path of the file under charts/.
     pub file: String,
-    /// `id` shared with the warnings that name the chart.
-    #[serde(skip)]
-    pub(crate) shared_id: Name,
 }
 
 impl Chart {
@@ -235,7 +231,7 @@ fn registry() -> &'static Registry {
         for (file, text) in CHART_FILES {
             match parse_chart(text, file) {
                 Ok(c) => {
-                    charts.insert(c.id.clone(), c);
+                    charts.insert(c.id.to_string(), c);
                 }
                 Err(e) => errors.push((file.to_string(), e)),
             }

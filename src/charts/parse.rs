@@ -230,15 +230,13 @@ pub fn parse_chart(text: &str, file: &str) -> Result<Chart, ChartError> {
         ));
     }
     Ok(Chart {
-        shared_id: Name::from(f.id.as_str()),
-        id: f.id,
+        id: Name::from(f.id),
         title: f.title,
         axes: f
             .axes
             .into_iter()
             .map(|a| Axis {
-                shared_symbol: Name::from(a.symbol.as_str()),
-                symbol: a.symbol,
+                symbol: Name::from(a.symbol),
                 name: a.name,
                 unit: a.unit,
                 below: a.below,

@@ -236,31 +236,17 @@ pub struct ParsedCard {
     pub extra: Option<String>,
 }
 
-/// Whether `trimmed` (a trimmed line) can be a control card: it begins with NACA or CASEID, or
-/// its first word is a card keyword. Namelist lines are turned away here, before any copy.
-fn may_be_card(trimmed: &str) -> bool {
-    let starts = |word: &str| {
-        trimmed
-            .as_bytes()
-            .get(..word.len())
-            .is_some_and(|b| b.eq_ignore_ascii_case(word.as_bytes()))
-    };
-    if starts("NACA") || starts("CASEID") {
-        return true;
-    }
-    let first = trimmed.split_whitespace().next().unwrap_or("");
-    [
-        "NEXT", "SAVE", "DAMP", "BUILD", "PART", "TRIM", "PLOT", "NAMELIST", "PRINT", "DIM",
-        "DERIV", "DUMP", "WRITE",
-    ]
-    .iter()
-    .any(|k| first.eq_ignore_ascii_case(k))
-}
-
 /// Reads a line as a control card; `None` when it is not one.
 pub fn parse_card(text: &str, line: usize) -> Option<ParsedCard> {
     let trimmed = text.trim();
-    if !may_be_card(trimmed) {
+    // Every card begins with a word of letters, NACA and CASEID even when their data run on:
+    // namelist lines and values are turned away here, before the line is copied.
+    let head = trimmed.split_whitespace().next()?.as_bytes();
+    let begins = |word: &str| {
+        head.get(..word.len())
+            .is_some_and(|b| b.eq_ignore_ascii_case(word.as_bytes()))
+    };
+    if !(begins("NACA") || begins("CASEID") || head.iter().all(u8::is_ascii_alphabetic)) {
         return None;
     }
     let upper = trimmed.to_ascii_uppercase();

@@ -903,7 +903,7 @@ impl<'a> Reader<'a> {
             assigned: &mut self.assigned,
             diags: &mut found,
         };
-        let problems = namelist::parse_body_each(&self.body, |a| target.assign(a));
+        let problems = namelist::parse_body(&self.body, |a| target.assign(a));
         for p in problems {
             self.diags.push(
                 Severity::Error,

@@ -373,16 +373,9 @@ impl<'s, 't> Parser<'s, 't> {
     }
 }
 
-/// Parses the tokens of one namelist body (without its `$NAME` and closing `$`).
-pub fn parse_body<'t>(toks: &[Token<'t>]) -> (Vec<Assignment<'t>>, Vec<BodyProblem>) {
-    let mut out = Vec::new();
-    let problems = parse_body_each(toks, |a| out.push(a.clone()));
-    (out, problems)
-}
-
-/// Parses the tokens of one namelist body as [`parse_body`] does, handing each assignment to
-/// `each` in order as it is read instead of collecting them; returns the problems found.
-pub fn parse_body_each<'t>(
+/// Parses the tokens of one namelist body (without its `$NAME` and closing `$`), handing each
+/// assignment to `each` in order as it is read; returns the problems found.
+pub fn parse_body<'t>(
     toks: &[Token<'t>],
     mut each: impl FnMut(&Assignment<'t>),
 ) -> Vec<BodyProblem> {
@@ -405,7 +398,9 @@ mod tests {
         for (i, l) in s.lines().enumerate() {
             lex_line(l, i + 1, 1, &mut toks);
         }
-        parse_body(&toks)
+        let mut out = Vec::new();
+        let problems = parse_body(&toks, |a| out.push(a.clone()));
+        (out, problems)
     }
 
     fn nums(a: &Assignment) -> Vec<f64> {
