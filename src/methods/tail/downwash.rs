@@ -479,15 +479,6 @@ pub(crate) fn downwash_from(
                 beff - (beff - vortex_root_factor * beff)
                     * (trailing / (semispan * 0.56 * a7 / cl)).abs().sqrt()
             };
-            let average = figures::read(
-                figures::AVERAGE_DOWNWASH,
-                &[
-                    (2.0 * height / vortex_span).abs(),
-                    2.0 * tail_semispan / vortex_span,
-                ],
-                &mut warnings,
-            )?
-            .max(0.0);
             if method == DownwashMethod::Empirical {
                 let lever = (tail_apex.0
                     - (tail_geometry.x_mac_le + tail_geometry.theoretical.mac / 4.0)
@@ -513,15 +504,23 @@ pub(crate) fn downwash_from(
                 gradient,
                 height_above_vortices: height,
                 vortex_span,
-                average_factor: if method == DownwashMethod::Empirical {
-                    1.0
-                } else {
-                    average
-                },
+                // Read below for the sheet at the angle itself (the last point), the one used.
+                average_factor: 1.0,
             });
         }
         match last.filter(|_| gradients.len() == points) {
-            Some(sheet) => {
+            Some(mut sheet) => {
+                if method != DownwashMethod::Empirical {
+                    sheet.average_factor = figures::read(
+                        figures::AVERAGE_DOWNWASH,
+                        &[
+                            (2.0 * sheet.height_above_vortices / sheet.vortex_span).abs(),
+                            2.0 * tail_semispan / sheet.vortex_span,
+                        ],
+                        &mut warnings,
+                    )?
+                    .max(0.0);
+                }
                 let e = trapezoid(&angles, &gradients) * sheet.average_factor;
                 epsilon.push(Some(e).filter(|v| v.is_finite()));
                 sheets.push(sheet);
