@@ -928,8 +928,27 @@ fn reference(case: &Case) -> ReferenceDimensions {
     }
 }
 
-/// Runs one case.
+/// Runs one case. A case whose angles of attack are not in increasing order is computed at
+/// its angles in increasing order, each once, with a warning (see
+/// [`crate::case::FlightInput::angles_in_order`]).
 pub fn run_case(case: &Case) -> CaseResults {
+    let Some(ordered) = case
+        .flight
+        .as_ref()
+        .and_then(crate::case::FlightInput::angles_in_order)
+    else {
+        return compute_case(case);
+    };
+    let mut fixed = case.clone();
+    if let Some(f) = fixed.flight.as_mut() {
+        f.alpha_deg = ordered.angles;
+    }
+    let mut results = compute_case(&fixed);
+    results.warnings.insert(0, ordered.reason);
+    results
+}
+
+fn compute_case(case: &Case) -> CaseResults {
     let mut warnings = Vec::new();
     let mut conditions = Vec::new();
     // Sections first: the wing methods take the wing's section from here (computed once).

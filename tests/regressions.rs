@@ -236,3 +236,32 @@ fn saved_data_repeated_warnings_are_reported_once() {
         .count();
     assert_eq!(n, 1, "{:?}", d.diagnostics);
 }
+
+/// A schedule of angles of attack out of order (the original prints wrong numbers for it:
+/// every curve is read against increasing angles) is computed in increasing order, with a
+/// warning: the same numbers as the ordered schedule, from a deck and from the library API.
+#[test]
+fn angles_of_attack_out_of_order_are_computed_in_order_with_a_warning() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let ordered = datcom::read_deck_file(&root.join("namelists/example-uav.dcm")).unwrap();
+    let mut case = ordered.cases[0].clone();
+    let flight = case.flight.as_mut().unwrap();
+    let increasing = flight.alpha_deg.clone();
+    assert!(increasing.len() > 2);
+    let mut shuffled: Vec<f64> = increasing.iter().rev().copied().collect();
+    shuffled.push(increasing[1]);
+    flight.alpha_deg = shuffled;
+    let fixed = datcom::results::run_case(&case);
+    let reference = datcom::results::run_case(&ordered.cases[0]);
+    assert!(
+        fixed.warnings[0].contains("not in increasing order"),
+        "{:?}",
+        fixed.warnings
+    );
+    assert_eq!(fixed.conditions.len(), reference.conditions.len());
+    for (a, b) in fixed.conditions.iter().zip(&reference.conditions) {
+        assert_eq!(a.alpha_deg, increasing);
+        assert_eq!(a.static_coefficients, b.static_coefficients);
+        assert_eq!(a.dynamic, b.dynamic);
+    }
+}

@@ -172,6 +172,46 @@ pub struct FlightInput {
     pub nalt_given: bool,
 }
 
+/// The angles of attack of a schedule that is not in increasing order, put in order, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OrderedAngles {
+    /// The finite angles in increasing order, each once.
+    pub angles: Vec<f64>,
+    /// What was wrong and what is computed instead (a warning for the user).
+    pub reason: String,
+}
+
+impl FlightInput {
+    /// None when the angles of attack increase strictly (as the methods need: every curve is
+    /// read against them, and the original prints wrong numbers for any other schedule);
+    /// otherwise the angles to compute at, in increasing order and each once, and why.
+    pub fn angles_in_order(&self) -> Option<OrderedAngles> {
+        let alpha = &self.alpha_deg;
+        let increasing =
+            alpha.iter().all(|a| a.is_finite()) && alpha.windows(2).all(|w| w[0] < w[1]);
+        if increasing {
+            return None;
+        }
+        let mut angles: Vec<f64> = alpha.iter().copied().filter(|a| a.is_finite()).collect();
+        angles.sort_by(f64::total_cmp);
+        angles.dedup();
+        let list = |v: &[f64]| {
+            v.iter()
+                .map(|a| format!("{a}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        Some(OrderedAngles {
+            reason: format!(
+                "the angles of attack (ALSCHD: {}) are not in increasing order: computed at {} (every curve is read against increasing angles; the original prints wrong numbers for this schedule)",
+                list(alpha),
+                list(&angles)
+            ),
+            angles,
+        })
+    }
+}
+
 /// $OPTINS: reference dimensions and roughness, SI.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct Reference {
