@@ -254,7 +254,7 @@ fn angles_of_attack_out_of_order_are_computed_in_order_with_a_warning() {
     let fixed = datcom::results::run_case(&case);
     let reference = datcom::results::run_case(&ordered.cases[0]);
     assert!(
-        fixed.warnings[0].contains("not in increasing order"),
+        fixed.warnings[0].contains("do not increase from each to the next"),
         "{:?}",
         fixed.warnings
     );

@@ -203,7 +203,7 @@ impl FlightInput {
         };
         Some(OrderedAngles {
             reason: format!(
-                "the angles of attack (ALSCHD: {}) are not in increasing order: computed at {} (every curve is read against increasing angles; the original prints wrong numbers for this schedule)",
+                "the angles of attack (ALSCHD: {}) do not increase from each to the next: computed at {} (every curve is read against increasing angles; the original prints wrong numbers for this schedule)",
                 list(alpha),
                 list(&angles)
             ),
