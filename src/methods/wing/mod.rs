@@ -145,7 +145,7 @@ pub enum WingMethodError {
     #[error("the aerodynamic centre of a forward-swept low-aspect-ratio planform (the original's FWDXAC) is not covered")]
     ForwardSweep,
     #[error(
-        "no section lift-curve slope at Mach {mach}: give CLALPA in $WGSCHR or an airfoil section"
+        "no section lift-curve slope at Mach {mach}: give CLALPA in the surface's section namelist ($WGSCHR, $HTSCHR, ...) or a NACA card"
     )]
     NoSectionLiftCurveSlope { mach: f64 },
     #[error("the wing section cannot be computed: {reason}")]
