@@ -265,3 +265,32 @@ fn angles_of_attack_out_of_order_are_computed_in_order_with_a_warning() {
         assert_eq!(a.dynamic, b.dynamic);
     }
 }
+
+/// One angle of attack: the wing-body lift reads the wing-alone lift curve at the wing's own
+/// angle (α plus the incidence effect), which a one-point curve gives as its value (the
+/// original's TBFUNX); the wing-body CL and every configuration with it were left blank without
+/// a word (a real deck, DanAlex-03 SysID for005.dat, has NALPHA=1; the original prints its CL).
+#[test]
+fn one_angle_of_attack_still_gives_the_wing_body_lift() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let deck = datcom::read_deck_file(&root.join("namelists/example-uav.dcm")).unwrap();
+    let mut case = deck.cases[0].clone();
+    case.cards.build = true;
+    case.flight.as_mut().unwrap().alpha_deg = vec![2.0];
+    let r = datcom::results::run_case(&case);
+    let with_wing: Vec<_> = r
+        .conditions
+        .iter()
+        .filter(|c| c.configuration.starts_with("WING"))
+        .collect();
+    assert!(with_wing.len() >= 3, "{:?}", r.conditions.len());
+    for c in with_wing {
+        let s = &c.static_coefficients;
+        assert!(
+            s.cl[0].is_some_and(f64::is_finite) && s.cn[0].is_some_and(f64::is_finite),
+            "{}: CL {:?}",
+            c.configuration,
+            s.cl
+        );
+    }
+}

@@ -238,7 +238,8 @@ impl LiftInputs<'_> {
 }
 
 /// The tabulated lift curve at `at`: linear between angles, extrapolated from the end chords
-/// (the original's TBFUNX with LEXL = LEXU = 1). None where a point it needs is none.
+/// (the original's TBFUNX with LEXL = LEXU = 1); a curve of one angle is its value. None where
+/// a point it needs is none.
 fn lift_curve_at(alpha: &[f64], cl: &[Option<f64>], at: f64) -> Option<f64> {
     let n = alpha.len().min(cl.len());
     if n == 0 {
@@ -248,7 +249,8 @@ fn lift_curve_at(alpha: &[f64], cl: &[Option<f64>], at: f64) -> Option<f64> {
         return cl[k];
     }
     if n == 1 {
-        return None;
+        // One angle: the curve is its one value (TBFUNX with one point).
+        return cl[0];
     }
     let k = if at < alpha[0] {
         0
