@@ -84,7 +84,9 @@ struct Rules {
     six_a: SixARule,
     /// The wing's zero-lift angle: DATCOM 4.1.3.1 (default), or as the original program reads
     /// it (the section's zero-lift angle at the last Mach number, its reading of figure
-    /// 4.1.3.1-4; to reproduce its listings; docs/wing.md).
+    /// 4.1.3.1-4, and the rate derivatives' zero lift read on the whole lift curve, also where
+    /// it falls through zero beyond the stall; to reproduce its listings; docs/wing.md,
+    /// docs/differences.md).
     #[arg(long = "zero-lift", value_enum, default_value = "handbook")]
     zero_lift: ZeroLiftRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,

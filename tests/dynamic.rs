@@ -878,3 +878,53 @@ fn listed_downwash_gradient(listing: &str) -> Vec<(f64, f64)> {
         .map(|t| t.rows.iter().filter_map(|r| Some((r[0]?, r[3]?))).collect())
         .unwrap_or_default()
 }
+
+/// On the oracle decks whose lift falls through zero again beyond the stall (Simple,
+/// Glider-qiao2, shadow, ...), the original reads the roll-damping method's zero
+/// lift on that post-stall crossing, with a negative lift slope: its wing Clp is positive (roll
+/// propelling) or, in the listings, -Infinity. With the library's defaults the zero lift is read
+/// on the rising part of the curve: the wing-body Clp damps the roll (is negative) at every
+/// angle below the maximum lift.
+#[test]
+fn roll_damping_damps_where_the_lift_falls_through_zero_beyond_the_stall() {
+    let Some(dir) = common::shared_dir("oracle/cases", "roll damping beyond the stall") else {
+        return;
+    };
+    let mut checked = 0;
+    for name in [
+        "YANG-DEMIN__myself_Simple_clean",
+        "YANG-DEMIN__myself_Glider-qiao2_clean",
+        "arktools__datcom2modelica_shadow_echo",
+    ] {
+        let deck = datcom::read_deck(&common::text(&dir.join(name).join("input.dcm")), name);
+        let results = datcom::run(&deck);
+        let before = checked;
+        for case in &results.cases {
+            for c in &case.conditions {
+                let (Some(d), true) = (&c.dynamic, c.configuration.starts_with("WING")) else {
+                    continue;
+                };
+                let cl = &c.static_coefficients.cl;
+                let top = cl
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(i, v)| v.map(|v| (i, v)))
+                    .fold((0, f64::MIN), |b, (i, v)| if v > b.1 { (i, v) } else { b })
+                    .0;
+                if !cl[top..].iter().flatten().any(|v| *v < 0.0) {
+                    continue;
+                }
+                for (i, clp) in d.clp.iter().enumerate().take(top) {
+                    let clp = clp.expect("Clp below the maximum lift");
+                    assert!(clp < 0.0, "{name} alpha {}: Clp {clp}", c.alpha_deg[i]);
+                    checked += 1;
+                }
+            }
+        }
+        eprintln!(
+            "{name}: {} Clp values below the maximum lift",
+            checked - before
+        );
+    }
+    assert!(checked > 20, "{checked} values checked");
+}

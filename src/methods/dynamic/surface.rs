@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::figures::{self, read};
 use super::{finite, Column, Dynamic, DynamicError, DynamicWarning, DEG_PER_RAD};
-use crate::case::{Case, Planform};
+use crate::case::{Case, Planform, ZeroLiftReading};
 use crate::geometry::{planform as planform_geometry, Span};
 use crate::methods::tail::table::{read as curve, End};
 use crate::methods::tail::HorizontalTailAlone;
@@ -252,6 +252,25 @@ fn pitch(
     Ok(())
 }
 
+/// The points of the lift curve `cl` from its least value before its maximum up to the
+/// maximum (the first greatest value; at least two points): the rising part of the curve, on
+/// which zero lift is read. Beyond either stall the lift may turn through zero again.
+fn rising_part(cl: &[f64]) -> std::ops::Range<usize> {
+    let least = |part: &[f64], better: fn(f64, f64) -> bool| {
+        part.iter().enumerate().fold(
+            0,
+            |best, (i, v)| if better(*v, part[best]) { i } else { best },
+        )
+    };
+    let top = least(cl, |v, best| v > best);
+    let bottom = least(&cl[..=top], |v, best| v < best);
+    if top - bottom >= 1 {
+        bottom..top + 1
+    } else {
+        0..cl.len().min(2)
+    }
+}
+
 /// β Clp/κ of figures 7.1.2.2-20a to -20d, linear in taper between the charts for 0, 0.25,
 /// 0.5 and 1 (the original's INTEP3). None outside taper 0 to 1 (the original's is undefined).
 fn roll_damping_parameter(
@@ -342,33 +361,43 @@ fn roll_yaw(
     let kappa = beta * w.terms.section.lift_curve_slope_per_rad / (2.0 * PI);
     terms.kappa_beta = kappa;
     let cl_o: Vec<Option<f64>> = cl.iter().map(|v| Some(*v)).collect();
-    let cd_o: Vec<Option<f64>> = cd.iter().map(|v| Some(*v)).collect();
-    let alpha_o: Vec<Option<f64>> = alpha.iter().map(|v| Some(*v)).collect();
-    // Zero-lift angle and drag on the CL curve; the lift slope there, with (α0, 0) added when
-    // the curve does not cross zero lift.
-    let Some((zero_alpha, _)) = curve(&cl, &alpha_o, 0.0, End::Linear, End::Linear) else {
+    // Zero-lift angle and drag, and the lift slope at zero lift, on the curve up to its
+    // maximum lift: beyond the stall the lift may fall through zero again, and that crossing
+    // (with its negative slope) is not the zero-lift angle. The original reads the whole
+    // curve (ZeroLiftReading::Original; docs/differences.md).
+    let part = match s.case.zero_lift {
+        ZeroLiftReading::Handbook => rising_part(&cl),
+        ZeroLiftReading::Original => 0..n,
+    };
+    let m = part.len();
+    let (alpha_r, cl_r) = (&alpha[part.clone()], &cl[part.clone()]);
+    let cl_ro = &cl_o[part.clone()];
+    let cd_ro: Vec<Option<f64>> = cd[part].iter().map(|v| Some(*v)).collect();
+    let alpha_ro: Vec<Option<f64>> = alpha_r.iter().map(|v| Some(*v)).collect();
+    let Some((zero_alpha, _)) = curve(cl_r, &alpha_ro, 0.0, End::Linear, End::Linear) else {
         missing(out, "no zero-lift angle on the lift curve");
         return Ok(());
     };
-    let Some((cd0, _)) = curve(&cl, &cd_o, 0.0, End::Quadratic, End::Quadratic) else {
+    let Some((cd0, _)) = curve(cl_r, &cd_ro, 0.0, End::Quadratic, End::Quadratic) else {
         missing(out, "no zero-lift drag on the drag polar");
         return Ok(());
     };
     terms.zero_lift_alpha_deg = Some(zero_alpha);
     terms.zero_lift_drag = Some(cd0);
-    let slope_at_zero = if cl[0] <= 0.0 && cl[n - 1] >= 0.0 {
-        curve(alpha, &cl_o, zero_alpha, End::Linear, End::Linear)
-    } else if cl[0] < 0.0 {
-        let mut x = alpha.to_vec();
+    // With (α0, 0) added when the curve does not cross zero lift.
+    let slope_at_zero = if cl_r[0] <= 0.0 && cl_r[m - 1] >= 0.0 {
+        curve(alpha_r, cl_ro, zero_alpha, End::Linear, End::Linear)
+    } else if cl_r[0] < 0.0 {
+        let mut x = alpha_r.to_vec();
         x.push(zero_alpha);
-        let mut y = cl_o.clone();
+        let mut y = cl_ro.to_vec();
         y.push(Some(0.0));
         curve(&x, &y, zero_alpha, End::Linear, End::Linear)
     } else {
         let mut x = vec![zero_alpha];
-        x.extend_from_slice(alpha);
+        x.extend_from_slice(alpha_r);
         let mut y = vec![Some(0.0)];
-        y.extend(cl_o.iter().copied());
+        y.extend(cl_ro.iter().copied());
         curve(&x, &y, zero_alpha, End::Linear, End::Linear)
     }
     .map(|r| r.1);
@@ -671,4 +700,21 @@ pub fn horizontal_tail_dynamic(
         out.cnr = Column::first(n, Some(0.0));
     }
     Ok((out, terms))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rising_part;
+
+    #[test]
+    fn zero_lift_is_read_on_the_rising_part_of_the_lift_curve() {
+        // Rising through zero, stalling at the fourth angle, falling through zero after it.
+        assert_eq!(rising_part(&[-0.2, 0.1, 0.5, 0.9, 0.6, -0.1]), 0..4);
+        // A schedule that starts beyond the negative stall: from the least lift before the
+        // maximum.
+        assert_eq!(rising_part(&[0.1, -0.8, -0.3, 0.4, 1.0, 0.2]), 1..5);
+        // Monotone: the whole curve; falling only: the first two points.
+        assert_eq!(rising_part(&[-0.1, 0.2, 0.4]), 0..3);
+        assert_eq!(rising_part(&[0.4, 0.2, -0.1]), 0..2);
+    }
 }

@@ -11,13 +11,16 @@ use super::{WingMethodError, WingWarning};
 #[serde(rename_all = "snake_case")]
 pub enum ZeroLiftReading {
     /// DATCOM 4.1.3.1: the section's low-speed zero-lift angle, figure 4.1.3.1-4 read linearly
-    /// in taper ratio, aspect ratio and sweep.
+    /// in taper ratio, aspect ratio and sweep. The rate derivatives (7.1.2.2, 7.1.2.3) read
+    /// zero lift on the rising part of the lift curve.
     #[default]
     Handbook,
     /// As the original program (SECO, CALCA0): the section's zero-lift angle as its section
     /// method left it after the last Mach number it computed (for every Mach number of the
-    /// case), and figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does. For
-    /// reproducing old listings (docs/wing.md).
+    /// case), and figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does; the rate
+    /// derivatives read zero lift on the whole lift curve (SUBRYW), where a curve that falls
+    /// through zero beyond the stall gives that crossing. For reproducing old listings
+    /// (docs/wing.md, docs/differences.md).
     Original,
 }
 
