@@ -299,6 +299,27 @@ fn twist_changes_the_zero_lift_angle_by_hand() {
     assert!(w.is_empty(), "{w:?}");
 }
 
+/// The original's CALCA0 corrects the zero-lift angle for a twist of 0.5° or more only
+/// (a build of its source prints the untwisted wing's CL for a deck with TWISTA = 0.39°):
+/// with the original's reading a smaller twist leaves the angle as untwisted; the handbook's
+/// reading applies any twist.
+#[test]
+fn the_originals_zero_lift_angle_leaves_a_twist_below_half_a_degree_out() {
+    use datcom::methods::wing::{wing_zero_lift_angle_read, ZeroLiftReading};
+    let p = twisted_planform();
+    let mut w = Vec::new();
+    let mut at = |twist: f64, reading| {
+        wing_zero_lift_angle_read(&p, -2.0, twist, false, Some(0.1), 0.2, reading, &mut w)
+            .unwrap()
+            .wing_deg
+    };
+    let untwisted = at(0.0, ZeroLiftReading::Original);
+    assert_eq!(at(0.4, ZeroLiftReading::Original), untwisted);
+    assert_eq!(at(-0.4, ZeroLiftReading::Original), untwisted);
+    assert_ne!(at(0.5, ZeroLiftReading::Original), untwisted);
+    assert_ne!(at(0.4, ZeroLiftReading::Handbook), untwisted);
+}
+
 #[test]
 fn twist_changes_the_zero_lift_moment_by_hand() {
     use datcom::methods::wing::zero_lift_moment;

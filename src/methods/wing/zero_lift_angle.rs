@@ -17,12 +17,17 @@ pub enum ZeroLiftReading {
     Handbook,
     /// As the original program (SECO, CALCA0): the section's zero-lift angle as its section
     /// method left it after the last Mach number it computed (for every Mach number of the
-    /// case), and figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does; the rate
+    /// case), figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does and applied only to
+    /// a twist of 0.5° or more; the rate
     /// derivatives read zero lift on the whole lift curve (SUBRYW), where a curve that falls
     /// through zero beyond the stall gives that crossing. For reproducing old listings
     /// (docs/wing.md, docs/differences.md).
     Original,
 }
+
+/// The least twist (deg, either sign) the original's CALCA0 corrects the zero-lift angle for;
+/// below it the wing's zero-lift angle is the untwisted one.
+const ORIGINAL_MIN_TWIST_DEG: f64 = 0.5;
 
 /// The distance within which the original's CALCA0 takes a node's curve of figure 4.1.3.1-4
 /// without interpolating (its own bracketing, not the chart's GLOOK tolerance).
@@ -114,7 +119,7 @@ pub struct ZeroLiftAngle {
 /// figure 4.1.3.1-5 (against M cos Λc/4, per thickness ratio), applied to cambered sections.
 /// Valid for straight-tapered wings at subsonic speeds (M cos Λc/4 up to the curves' ends,
 /// where the end value is held). The original adds the twist term only for |θ| ≥ 0.5°; here
-/// for any twist.
+/// for any twist, and with [`ZeroLiftReading::Original`] as the original.
 pub fn wing_zero_lift_angle(
     planform: &WingPlanform,
     section_deg: f64,
@@ -156,6 +161,19 @@ pub fn wing_zero_lift_angle_read(
     let per_twist = if twist_deg == 0.0 {
         None
     } else if reading == ZeroLiftReading::Original {
+        // The original's CALCA0 leaves a twist below ORIGINAL_MIN_TWIST_DEG out.
+        if twist_deg.abs() < ORIGINAL_MIN_TWIST_DEG {
+            return wing_zero_lift_angle_read(
+                planform,
+                section_deg,
+                0.0,
+                cambered,
+                thickness_ratio,
+                mach,
+                reading,
+                warnings,
+            );
+        }
         Some(twist_term_as_the_original(
             taper,
             aspect_ratio,
