@@ -824,3 +824,30 @@ fn body_sideslip_is_the_body_pages_slopes() {
         );
     }
 }
+
+/// The horizontal tail's end-plate effect on the vertical tail (figures 5.3.1.1-22b, -22c)
+/// applies while the tail's exposed-MAC quarter chord is not below the body axis; the original
+/// (SUBLAT) tests that height only. lkampoli ex8 (all-movable tail, HINAX = 4.271) with
+/// ALIH = -1.8153°: the rotation about the hinge puts ZH at -0.0108 ft while the MAC quarter
+/// chord stays above; a gfortran build of the original's source prints CYB -1.603E-02,
+/// CNB 4.028E-03 per degree (we skipped the factors on the sign of ZH: -1.331E-02).
+#[test]
+fn the_tail_end_plate_follows_the_tail_mac_height_not_zh() {
+    let Some(dir) = common::shared_dir("oracle/cases", "end plate with a hinged tail") else {
+        return;
+    };
+    let text =
+        common::text(&dir.join("lkampoli__ex8/input.dcm")).replace("ALIH=0.0", "ALIH=-1.8153");
+    assert!(text.contains("ALIH=-1.8153"), "the deck's ALIH changed");
+    let deck = datcom::read_deck(&text, "ex8-alih").with_original_rules();
+    let results = datcom::run(&deck);
+    let c = &results.cases[0].conditions[0];
+    let s = &c.static_coefficients;
+    // Per radian in the results, per degree in the listing.
+    let (cyb, cnb) = (
+        s.cyb[0].expect("CYB").to_radians(),
+        s.cnb[0].expect("CNB").to_radians(),
+    );
+    assert!(agrees("CYB", cyb, -1.603e-2), "CYB {cyb}");
+    assert!(agrees("CNB", cnb, 4.028e-3), "CNB {cnb}");
+}

@@ -256,7 +256,7 @@ pub fn fin_lateral(
         let (xh, zh) = tail_position(synthesis);
         let alih = get(|s| s.alih_deg);
         let zh_mac = zh - gh.x_exposed_mac_quarter * alih.to_radians().sin();
-        if zh >= 0.0 && zh_mac >= 0.0 {
+        if zh_mac >= 0.0 {
             let quarter = xh + gh.x_mac_le + gh.theoretical.mac / 4.0 - get(|s| s.xv);
             let (x, chord) = chord_at_tail_height(plan, &g, quarter, zh);
             tail_aspect_ratio_factor = Some(read(
