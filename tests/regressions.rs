@@ -294,3 +294,31 @@ fn one_angle_of_attack_still_gives_the_wing_body_lift() {
         );
     }
 }
+
+/// From a deck, the angles out of order are a warning located at ALSCHD, and the case holds
+/// them in order (computed once, without a second warning from the run).
+#[test]
+fn angles_of_attack_out_of_order_in_a_deck_are_located_and_put_in_order() {
+    let d = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0,\n  NALPHA=3.0, ALSCHD(1)=4.0,0.0,2.0$\n $SYNTHS XCG=1.0$\n",
+    );
+    let w = d
+        .diagnostics
+        .iter()
+        .find(|x| {
+            x.to_string()
+                .contains("do not increase from each to the next")
+        })
+        .expect("a warning for the order");
+    assert_eq!(w.severity, Severity::Warning);
+    assert!(w.to_string().contains("t.dcm:2:"), "{w}");
+    assert_eq!(
+        d.cases[0].flight.as_ref().unwrap().alpha_deg,
+        vec![0.0, 2.0, 4.0]
+    );
+    let r = datcom::run(&d);
+    assert!(!r.cases[0]
+        .warnings
+        .iter()
+        .any(|w| w.contains("do not increase")));
+}

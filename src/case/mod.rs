@@ -910,6 +910,12 @@ impl Case {
         };
         case.check(&mut checks);
         let mut case = case;
+        // Angles out of order were reported by the checks: the case computes them in order.
+        if let Some(f) = case.flight.as_mut() {
+            if let Some(ordered) = f.angles_in_order() {
+                f.alpha_deg = ordered.angles;
+            }
+        }
         if let Some(f) = &case.flight {
             let (conditions, warnings) = conditions::flight_conditions(f);
             for w in &warnings {
@@ -1002,6 +1008,15 @@ impl Case {
                         Some("ALSCHD"),
                         "no angle of attack is given: no coefficient table can be computed".into(),
                         Some("give NALPHA and ALSCHD(1)=..."),
+                    );
+                }
+                if let Some(ordered) = f.angles_in_order() {
+                    c.push(
+                        Severity::Warning,
+                        "FLTCON",
+                        Some("ALSCHD"),
+                        ordered.reason,
+                        Some("give the angles of attack in increasing order"),
                     );
                 }
                 c.range("FLTCON", "MACH", MACH_RANGE, self.dim);
