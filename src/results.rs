@@ -159,6 +159,32 @@ pub struct ConditionResults {
     pub static_coefficients: StaticCoefficients,
     /// Present when the case has DAMP.
     pub dynamic: Option<DynamicDerivatives>,
+    /// The downwash and dynamic pressure at the horizontal tail (the original's ALPHA Q/QINF
+    /// EPSLON D(EPSLON)/D(ALPHA) table under the page), on the configurations with a
+    /// horizontal tail behind the wing.
+    pub downwash: Option<DownwashTable>,
+}
+
+/// The downwash at the horizontal tail at each angle of attack of the page (DATCOM 4.4.1):
+/// none where it is not computed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DownwashTable {
+    /// Dynamic pressure at the tail over the free stream's, q/q∞.
+    pub dynamic_pressure_ratio: Vec<Option<f64>>,
+    /// Downwash angle ε, degrees (positive down).
+    pub epsilon_deg: Vec<Option<f64>>,
+    /// dε/dα.
+    pub gradient: Vec<Option<f64>>,
+}
+
+impl From<&crate::methods::tail::Downwash> for DownwashTable {
+    fn from(d: &crate::methods::tail::Downwash) -> Self {
+        DownwashTable {
+            dynamic_pressure_ratio: d.dynamic_pressure_ratio.clone(),
+            epsilon_deg: d.epsilon_deg.clone(),
+            gradient: d.gradient.clone(),
+        }
+    }
 }
 
 /// A lifting surface's airfoil section: its coordinate table and characteristics (the
@@ -1027,7 +1053,25 @@ fn compute_case(case: &Case) -> CaseResults {
                     // With DAMP the original prints a dynamic page after each configuration's
                     // static page.
                     dynamic: None,
+                    downwash: None,
                 };
+                // The pages with a horizontal tail behind the wing carry its downwash.
+                if !matches!(
+                    part,
+                    LOW_ASPECT_RATIO
+                        | BODY_ALONE
+                        | WING_ALONE
+                        | WING_BODY
+                        | HORIZONTAL_TAIL
+                        | VERTICAL_TAIL
+                        | BODY_HT
+                        | BODY_VT
+                        | WING_BODY_VT
+                ) {
+                    if let Some(Ok(t)) = &totals {
+                        entry.downwash = t.terms.downwash.as_ref().map(DownwashTable::from);
+                    }
+                }
                 if case.cards.damp {
                     let (d, mut w) = dynamic_derivatives(
                         case,
@@ -1059,6 +1103,7 @@ fn compute_case(case: &Case) -> CaseResults {
                     alpha_deg: f.alpha_deg.clone(),
                     static_coefficients: StaticCoefficients::empty(n),
                     dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
+                    downwash: None,
                 });
             }
         }

@@ -171,6 +171,13 @@ fn for006_pages_read_back_to_our_numbers() {
                 d.no_method = vec!["CLAD"];
                 d.clad = vec![None; n];
             }
+            if let Some(w) = &mut c.downwash {
+                w.dynamic_pressure_ratio = (0..n).map(|i| Some(0.9 + 0.001 * i as f64)).collect();
+                w.epsilon_deg = (0..n).map(|i| Some(-1.5 + 0.25 * i as f64)).collect();
+                w.gradient = (0..n).map(|i| Some(0.6 - 0.05 * i as f64)).collect();
+                // A value not computed is blank.
+                w.gradient[n - 1] = None;
+            }
         }
     }
     let listing = datcom::report::for006::to_string(&r);
@@ -199,4 +206,33 @@ fn for006_pages_read_back_to_our_numbers() {
     // The neighbours of the NDM field are read in their own columns.
     let cmad = dy.column("CMAD").unwrap();
     assert!((cmad[0].unwrap() - c.dynamic.as_ref().unwrap().cmad[0].unwrap()).abs() < 1e-6);
+    // The downwash table under the pages with a horizontal tail (F10.3 fields).
+    let mut tables = 0;
+    for (c, b) in r.cases[0].conditions.iter().zip(&back[0].conditions) {
+        let (Some(w), Some(t)) = (&c.downwash, &b.downwash) else {
+            assert!(
+                c.downwash.is_none() && b.downwash.is_none(),
+                "{}",
+                c.configuration
+            );
+            continue;
+        };
+        tables += 1;
+        for (name, ours) in [
+            ("Q/QINF", &w.dynamic_pressure_ratio),
+            ("EPSLON", &w.epsilon_deg),
+            ("D(EPSLON)/D(ALPHA)", &w.gradient),
+        ] {
+            let read = t.column(name).unwrap();
+            assert_eq!(read.len(), ours.len(), "{name}");
+            for (o, r) in ours.iter().zip(read) {
+                match (o, r) {
+                    (Some(o), Some(r)) => assert!((o - r).abs() <= 0.0005 + 1e-12, "{name}"),
+                    (None, None) => {}
+                    _ => panic!("{name}: ours {o:?}, read {r:?}"),
+                }
+            }
+        }
+    }
+    assert!(tables > 0, "the example has a page with a horizontal tail");
 }

@@ -6,7 +6,7 @@
 use std::fmt::Write;
 
 use super::derivative_view;
-use super::legacy::{DYNAMIC_COLUMNS, STATIC_COLUMNS};
+use super::legacy::{DOWNWASH_COLUMNS, DOWNWASH_HEADING, DYNAMIC_COLUMNS, STATIC_COLUMNS};
 use super::text::{flight_conditions_block, fortran_e, fortran_f};
 use crate::deck::cards::DerivUnit;
 use crate::results::{CaseResults, ConditionResults, Results};
@@ -95,6 +95,26 @@ fn static_page(out: &mut String, case: &CaseResults, c: &ConditionResults) {
     }
 }
 
+/// The downwash table under a page with a horizontal tail (nothing without one); the text
+/// report prints the same table.
+pub(crate) fn downwash_table(out: &mut String, c: &ConditionResults) {
+    let Some(d) = &c.downwash else { return };
+    let _ = writeln!(out, "{DOWNWASH_HEADING}");
+    let _ = writeln!(out, "0");
+    let w = widths(&DOWNWASH_COLUMNS);
+    for (i, a) in c.alpha_deg.iter().enumerate() {
+        let at = |col: &Vec<Option<f64>>| col.get(i).copied().flatten();
+        let row = format!(
+            "{}{}{}{}",
+            fortran_f(*a, 1, w[0]),
+            field(at(&d.dynamic_pressure_ratio), w[1], 3),
+            field(at(&d.epsilon_deg), w[2], 3),
+            field(at(&d.gradient), w[3], 3),
+        );
+        let _ = writeln!(out, "{}", row.trim_end());
+    }
+}
+
 /// The DYNAMIC DERIVATIVES page of a condition (nothing without DAMP); the text report prints
 /// the same page.
 pub(crate) fn dynamic_page(out: &mut String, case: &CaseResults, c: &ConditionResults) {
@@ -143,6 +163,7 @@ pub fn to_string(results: &Results) -> String {
         out.push_str(&super::text::section_pages(case));
         for c in &case.conditions {
             static_page(&mut out, case, c);
+            downwash_table(&mut out, c);
             dynamic_page(&mut out, case, c);
         }
     }

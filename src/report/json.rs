@@ -72,6 +72,23 @@ pub struct ConditionJson {
     #[serde(rename = "static")]
     pub static_coefficients: StaticJson,
     pub dynamic: Option<DynamicJson>,
+    /// The downwash at the horizontal tail (the original's table under the page); absent on
+    /// pages without one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub downwash: Option<DownwashJson>,
+}
+
+/// The ALPHA Q/QINF EPSLON D(EPSLON)/D(ALPHA) table.
+#[derive(Serialize)]
+pub struct DownwashJson {
+    pub alpha: Vec<f64>,
+    #[serde(rename = "Q/QINF")]
+    pub q_over_q_inf: Vec<Option<f64>>,
+    /// Degrees.
+    #[serde(rename = "EPSLON")]
+    pub epsilon: Vec<Option<f64>>,
+    #[serde(rename = "D(EPSLON)/D(ALPHA)")]
+    pub gradient: Vec<Option<f64>>,
 }
 
 #[derive(Serialize)]
@@ -202,6 +219,12 @@ fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
             clr: d(&y.clr, u),
             cyr: y.cyr.as_ref().map(|c| d(c, u)),
             no_method: y.no_method.iter().map(|n| n.to_string()).collect(),
+        }),
+        downwash: c.downwash.as_ref().map(|w| DownwashJson {
+            alpha: c.alpha_deg.clone(),
+            q_over_q_inf: w.dynamic_pressure_ratio.clone(),
+            epsilon: w.epsilon_deg.clone(),
+            gradient: w.gradient.clone(),
         }),
     }
 }
@@ -350,6 +373,12 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                                         .as_ref()
                                         .map(super::legacy::Table::no_method)
                                         .unwrap_or_default(),
+                                }),
+                                downwash: k.downwash.as_ref().map(|_| DownwashJson {
+                                    alpha: alpha(&k.downwash),
+                                    q_over_q_inf: listed_column(&k.downwash, "Q/QINF"),
+                                    epsilon: listed_column(&k.downwash, "EPSLON"),
+                                    gradient: listed_column(&k.downwash, "D(EPSLON)/D(ALPHA)"),
                                 }),
                             }
                         })

@@ -152,6 +152,19 @@ pub const DYNAMIC_COLUMNS: [(&str, usize); 10] = [
     ("CLR", 127),
 ];
 
+/// The table under a page with a horizontal tail (ALPHA, Q/QINF, EPSLON, D(EPSLON)/D(ALPHA)):
+/// each column's right edge.
+pub const DOWNWASH_COLUMNS: [(&str, usize); 4] = [
+    ("ALPHA", 41),
+    ("Q/QINF", 52),
+    ("EPSLON", 63),
+    ("D(EPSLON)/D(ALPHA)", 76),
+];
+
+/// The downwash table's heading as the original prints it.
+pub const DOWNWASH_HEADING: &str =
+    "0                                    ALPHA     Q/QINF    EPSLON  D(EPSLON)/D(ALPHA)";
+
 /// A table read from a listing: its columns by name, one entry per row (`None`: blank, NDM,
 /// NA or an overflowed field), with the printed text kept for precision.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -221,6 +234,8 @@ pub struct ListedCondition {
     pub deriv_per_radian: bool,
     pub statics: Option<Table>,
     pub dynamics: Option<Table>,
+    /// The downwash table printed under the static page.
+    pub downwash: Option<Table>,
 }
 
 /// One case of a listing.
@@ -292,6 +307,21 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
                 &DYNAMIC_COLUMNS
             },
         );
+        // Under a static page, before the next page: the downwash table, when there is one.
+        let downwash = is_static
+            .then(|| {
+                let rows = table.texts.len();
+                lines
+                    .iter()
+                    .enumerate()
+                    .skip(header + 2 + rows)
+                    .take_while(|(_, l)| !l.starts_with('1'))
+                    .find(|(_, l)| {
+                        l.starts_with('0') && l.contains("Q/QINF") && l.contains("EPSLON")
+                    })
+                    .map(|(k, _)| read_table(&lines, k + 2, &DOWNWASH_COLUMNS))
+            })
+            .flatten();
         if new_case || cases.is_empty() {
             cases.push(ListedCase::default());
             new_case = false;
@@ -330,6 +360,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
                     deriv_per_radian: per_radian,
                     statics: None,
                     dynamics: None,
+                    downwash: None,
                 });
                 case.conditions.len() - 1
             }
@@ -338,6 +369,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
         if is_static {
             c.statics = Some(table);
             c.deriv_per_radian = per_radian;
+            c.downwash = downwash;
         } else {
             c.dynamics = Some(table);
         }

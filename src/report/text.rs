@@ -157,6 +157,7 @@ pub fn to_string(results: &Results) -> String {
             let _ = writeln!(s, "{:^120}", case.caseid.as_deref().unwrap_or(""));
             s.push_str(&flight_conditions_block(case, c));
             s.push_str(&table(case, c));
+            super::for006::downwash_table(&mut s, c);
             s.push('\n');
             super::for006::dynamic_page(&mut s, case, c);
         }
