@@ -16,6 +16,8 @@ pub const RELATIVE: f64 = 0.02;
 pub fn printed_unit(column: &str, v: f64) -> f64 {
     match column {
         "CD" | "CL" | "CN" | "CA" | "XCP" => 1e-3,
+        // The downwash table's F.3 fields.
+        "Q/QINF" | "EPSLON" | "D(EPSLON)/D(ALPHA)" => 1e-3,
         "CM" => 1e-4,
         _ => {
             if v == 0.0 {
@@ -72,6 +74,7 @@ const STATIC: [&str; 11] = [
 const DYNAMIC: [&str; 9] = [
     "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
 ];
+const DOWNWASH: [&str; 3] = ["Q/QINF", "EPSLON", "D(EPSLON)/D(ALPHA)"];
 
 fn numbers(v: &Value) -> Vec<Option<f64>> {
     v.as_array()
@@ -85,6 +88,7 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
     let mut out: Vec<ColumnAgreement> = STATIC
         .iter()
         .chain(DYNAMIC.iter())
+        .chain(DOWNWASH.iter())
         .map(|c| ColumnAgreement {
             coefficient: c.to_string(),
             compared: 0,
@@ -130,7 +134,11 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
             }
         }
         for (ki, (x, y)) in pairs.into_iter().enumerate() {
-            for (block, names) in [("static", &STATIC[..]), ("dynamic", &DYNAMIC[..])] {
+            for (block, names) in [
+                ("static", &STATIC[..]),
+                ("dynamic", &DYNAMIC[..]),
+                ("downwash", &DOWNWASH[..]),
+            ] {
                 let alpha = numbers(&y[block]["alpha"]);
                 for name in names {
                     let col = out
@@ -172,8 +180,16 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
 
 /// The agreement as a text table.
 pub fn to_text(rows: &[ColumnAgreement]) -> String {
-    let mut s = String::from(
-        "coefficient  agree/total   fraction  missing  worst |ours - reference| (case, condition, alpha: ours vs reference)\n",
+    // The name column fits the longest name (D(EPSLON)/D(ALPHA)).
+    let w = rows
+        .iter()
+        .map(|r| r.coefficient.len())
+        .max()
+        .unwrap_or(0)
+        .max(12);
+    let mut s = format!(
+        "{:<w$} agree/total   fraction  missing  worst |ours - reference| (case, condition, alpha: ours vs reference)\n",
+        "coefficient"
     );
     for r in rows {
         let worst = r.worst.as_ref().map_or(String::new(), |w| {
@@ -183,7 +199,7 @@ pub fn to_text(rows: &[ColumnAgreement]) -> String {
             )
         });
         s.push_str(&format!(
-            "{:<12} {:>5}/{:<7} {:>8.1}% {:>8}  {}\n",
+            "{:<w$} {:>5}/{:<7} {:>8.1}% {:>8}  {}\n",
             r.coefficient,
             r.agreeing,
             r.compared + r.missing,
