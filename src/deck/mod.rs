@@ -331,6 +331,21 @@ impl<'a> Reader<'a> {
         );
     }
 
+    /// A control card whose output of the original this program does not produce: a warning,
+    /// so that the missing pages are not a surprise.
+    fn output_not_reproduced(&mut self, line: usize, column: usize, card: &str, what: &str) {
+        self.diag(
+            Severity::Warning,
+            (line, column),
+            Some(card),
+            None,
+            DeckProblem::Case {
+                message: format!("a {card} card: {what}"),
+            },
+            None,
+        );
+    }
+
     fn touch_case(&mut self, line: usize) {
         if self.case.first_line == 0 {
             self.case.first_line = line;
@@ -760,8 +775,24 @@ impl<'a> Reader<'a> {
             Card::Deriv(d) => self.case.cards.deriv = Some(d),
             Card::Damp => self.case.cards.damp = true,
             Card::Build => self.case.cards.build = true,
-            Card::Part => self.case.cards.part = true,
-            Card::Trim => self.case.cards.trim = true,
+            Card::Part => {
+                self.case.cards.part = true;
+                self.output_not_reproduced(
+                    n,
+                    col,
+                    "PART",
+                    "the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT pages are not printed (the methods' terms are in the library's results)",
+                );
+            }
+            Card::Trim => {
+                self.case.cards.trim = true;
+                self.output_not_reproduced(
+                    n,
+                    col,
+                    "TRIM",
+                    "the trim computation and its pages are not done; the untrimmed pages are",
+                );
+            }
             Card::Plot => self.case.cards.plot = true,
             Card::PrintExtrap => self.case.cards.print_extrap = true,
             Card::Namelist => self.case.cards.namelist = true,
