@@ -931,7 +931,12 @@ pub fn configuration_name(case: &Case) -> String {
 /// Reference dimensions: $OPTINS, else the wing's theoretical area, mean aerodynamic chord and
 /// span; $LARWB's SREF, L and XCG replace them when given (as in the original).
 fn reference(case: &Case) -> ReferenceDimensions {
-    let from_wing = case.wing.as_ref().and_then(planform_area_and_mac);
+    // A planform too large for f64 gives no reference (and `run_case` says so).
+    let from_wing = case
+        .wing
+        .as_ref()
+        .and_then(planform_area_and_mac)
+        .filter(|(area, chord)| area.is_finite() && chord.is_finite());
     let synth = case.synthesis.as_ref();
     if let Some(lb) = &case.larwb {
         return ReferenceDimensions {
@@ -1115,6 +1120,12 @@ fn compute_case(case: &Case) -> CaseResults {
     };
     let mut first = first.into_iter();
     warnings.retain(|_| first.next().unwrap_or(true));
+    let wing_reference = case.wing.as_ref().and_then(planform_area_and_mac);
+    if wing_reference.is_some_and(|(area, chord)| !(area.is_finite() && chord.is_finite())) {
+        warnings.push(
+            "the wing's planform gives no finite reference area or chord (its dimensions overflow): no reference taken from it".into(),
+        );
+    }
     CaseResults {
         number: case.number,
         caseid: case.caseid.clone(),
