@@ -225,18 +225,92 @@ impl Diags<'_> {
     }
 }
 
-/// Elements assigned in the current case: a set of indices (bit `i` for element `i`) by the
-/// [`schema::key`]s of namelist and variable, sorted by key (see [`sorted_entry`]).
-type Assigned = Vec<((u64, u64), u128)>;
+/// What the current case holds of one namelist: a record for each variable of its schema, at
+/// the variable's place in [`Table::vars`]. The case's map of values and its [`Origins`] are
+/// made from these when the case ends; while reading, an assignment finds its variable by
+/// index instead of through maps keyed by name.
+#[derive(Clone)]
+struct NamelistRecord<'a> {
+    name: Cow<'a, str>,
+    /// The [`schema::key`] of the name; records are sorted by it, which is the order of names.
+    key: u64,
+    table: &'static Table,
+    /// The namelist is among the case's namelists (`$SYMFLP` and `$ASYFLP` remove each other;
+    /// the places of their assignments stay recorded).
+    present: bool,
+    /// The namelist appeared in the current case (data carried by SAVE does not count).
+    seen: bool,
+    vars: Vec<VarRecord>,
+}
+
+#[derive(Clone, Default)]
+struct VarRecord {
+    value: Option<Value>,
+    /// Elements assigned in the current case: bit `i` for element `i`.
+    assigned: u128,
+    /// Where the variable was last assigned (line, column).
+    origin: Option<(usize, usize)>,
+}
+
+impl NamelistRecord<'_> {
+    fn var(&self, name: &str) -> Option<&VarRecord> {
+        self.table.index(name).map(|i| &self.vars[i])
+    }
+
+    /// The value of `name`, when the namelist is among the case's and the variable was set.
+    fn value(&self, name: &str) -> Option<&Value> {
+        self.var(name)
+            .filter(|_| self.present)
+            .and_then(|v| v.value.as_ref())
+    }
+}
+
+/// The record of namelist `key` in `records` (sorted by key).
+fn find_record<'r, 'a>(
+    records: &'r [NamelistRecord<'a>],
+    key: u64,
+) -> Option<&'r NamelistRecord<'a>> {
+    let i = records.binary_search_by_key(&key, |r| r.key).ok()?;
+    Some(&records[i])
+}
+
+/// The case's namelists and the places of their assignments, from the records; the values
+/// are moved out of the records when `take`, else copied.
+fn materialize(
+    records: &mut [NamelistRecord],
+    take: bool,
+) -> (BTreeMap<String, NamelistValues>, Origins) {
+    let mut places = Vec::new();
+    let mut namelists = BTreeMap::new();
+    for r in records.iter_mut() {
+        let mut values = NamelistValues::new();
+        for (v, (var_key, spec)) in r.vars.iter_mut().zip(r.table.vars()) {
+            if let Some(at) = v.origin {
+                places.push(((r.key, *var_key), at));
+            }
+            let value = if take {
+                v.value.take()
+            } else {
+                v.value.clone()
+            };
+            if let Some(value) = value {
+                values.insert(spec.name.clone(), value);
+            }
+        }
+        if r.present {
+            namelists.insert(r.name.to_string(), values);
+        }
+    }
+    (namelists, Origins { places })
+}
 
 struct Reader<'a> {
     file: &'a str,
     diags: Diags<'a>,
     cases: Vec<RawCase>,
     case: RawCase,
-    assigned: Assigned,
-    /// Namelists that appeared in the current case, by [`schema::key`].
-    seen: Vec<u64>,
+    /// The namelists of the current case, sorted by key.
+    records: Vec<NamelistRecord<'a>>,
     /// Surfaces that had a NACA card in the current case.
     seen_naca: Vec<Surface>,
     /// The current case began with data carried by SAVE, in this unit system.
@@ -876,7 +950,22 @@ impl<'a> Reader<'a> {
         };
         let name: &str = &open.name;
         let nl_key = schema::key(name).expect("known namelists have short names");
-        if self.seen.contains(&nl_key) {
+        let i = match self.records.binary_search_by_key(&nl_key, |r| r.key) {
+            Ok(i) => i,
+            Err(i) => {
+                let record = NamelistRecord {
+                    name: open.name.clone(),
+                    key: nl_key,
+                    table,
+                    present: false,
+                    seen: false,
+                    vars: vec![VarRecord::default(); table.vars().len()],
+                };
+                self.records.insert(i, record);
+                i
+            }
+        };
+        if self.records[i].seen {
             self.diags.push(
                 Severity::Note,
                 (open.line, open.column),
@@ -888,7 +977,7 @@ impl<'a> Reader<'a> {
                 None,
             );
         } else {
-            self.seen.push(nl_key);
+            self.records[i].seen = true;
         }
         // Symmetric and asymmetric flap data share storage in the original: reading one
         // clears the other.
@@ -897,8 +986,15 @@ impl<'a> Reader<'a> {
             "ASYFLP" => Some("SYMFLP"),
             _ => None,
         };
-        if let Some(rival) = rival {
-            if self.case.namelists.remove(rival).is_some() {
+        let rival_record = rival
+            .and_then(schema::key)
+            .and_then(|k| self.records.binary_search_by_key(&k, |r| r.key).ok());
+        if let (Some(rival), Some(r)) = (rival, rival_record) {
+            let record = &mut self.records[r];
+            if std::mem::take(&mut record.present) {
+                for v in &mut record.vars {
+                    v.value = None;
+                }
                 self.diags.push(
                     Severity::Warning,
                     (open.line, open.column),
@@ -913,12 +1009,8 @@ impl<'a> Reader<'a> {
                 );
             }
         }
-        if !self.case.namelists.contains_key(name) {
-            self.case
-                .namelists
-                .insert(name.to_string(), NamelistValues::new());
-        }
-        let values = self.case.namelists.get_mut(name).expect("inserted above");
+        let record = &mut self.records[i];
+        record.present = true;
         // Assignments are applied as they are read; what they find wrong is reported after the
         // body's syntax problems.
         let mut found = Diags {
@@ -927,11 +1019,8 @@ impl<'a> Reader<'a> {
         };
         let mut target = Target {
             name,
-            key: nl_key,
             table,
-            values,
-            origins: &mut self.case.origins,
-            assigned: &mut self.assigned,
+            vars: &mut record.vars,
             diags: &mut found,
         };
         let problems = namelist::parse_body(&self.body, |a| target.assign(a));
@@ -968,16 +1057,16 @@ impl<'a> Reader<'a> {
                 )
             };
         let mut found = Vec::new();
-        let nmach = self.case.scalar("FLTCON", "NMACH");
-        for (nl, values) in &self.case.namelists {
-            let Some(table) = schema::table(nl) else {
-                continue;
-            };
-            let nl_key = schema::key(nl).expect("known namelists have short names");
+        let nmach = schema::key("FLTCON")
+            .and_then(|k| find_record(&self.records, k))
+            .and_then(|r| r.value("NMACH"))
+            .and_then(Value::scalar);
+        for record in self.records.iter().filter(|r| r.present) {
+            let nl = &record.name;
             if let (Some(nn), Some(nmach)) = (nl.strip_prefix("EXPR"), nmach) {
                 if nn.parse::<f64>().is_ok_and(|k| k > nmach) {
                     found.push((
-                        nl.clone(),
+                        nl.to_string(),
                         None,
                         Severity::Warning,
                         DeckProblem::Case {
@@ -989,8 +1078,9 @@ impl<'a> Reader<'a> {
                     ));
                 }
             }
-            for (name, value) in values {
-                let Some(var) = table.var(name) else { continue };
+            for (v, (_, var)) in record.vars.iter().zip(record.table.vars()) {
+                let Some(value) = &v.value else { continue };
+                let name = &var.name;
                 let Some(count_var) = &var.count else {
                     continue;
                 };
@@ -1000,13 +1090,13 @@ impl<'a> Reader<'a> {
                 if count_var.contains('(') {
                     continue;
                 }
-                let Some(count) = values.get(count_var).and_then(Value::scalar) else {
+                let Some(count) = record.value(count_var).and_then(Value::scalar) else {
                     continue;
                 };
                 let given = value.leading_count();
                 if count.fract() != 0.0 || count < 0.0 || count > var.len as f64 {
                     found.push((
-                        nl.clone(),
+                        nl.to_string(),
                         Some(count_var.clone()),
                         Severity::Error,
                         DeckProblem::WrongKind {
@@ -1026,14 +1116,8 @@ impl<'a> Reader<'a> {
                     };
                     found.push(mismatch(nl, name, count_var, count, given, hint));
                 } else if (given as f64) > count
-                    && schema::key(&var.name)
-                        .and_then(|v| {
-                            let k = (nl_key, v);
-                            let i = self.assigned.binary_search_by_key(&k, |(ak, _)| *ak);
-                            i.ok().map(|i| self.assigned[i].1)
-                        })
-                        // Elements after the first `count` (a whole number up to the length).
-                        .is_some_and(|set| set >> (count as u32 + 1) != 0)
+                    // Elements after the first `count` (a whole number up to the length).
+                    && v.assigned >> (count as u32 + 1) != 0
                 {
                     // Values beyond the count written in this case (saved data may hold more
                     // values than a later case asks for on purpose).
@@ -1047,7 +1131,11 @@ impl<'a> Reader<'a> {
         for (nl, var, severity, problem, hint) in found {
             let at = var
                 .as_ref()
-                .and_then(|v| self.case.origins.get(&nl, v))
+                .and_then(|v| {
+                    find_record(&self.records, schema::key(&nl)?)?
+                        .var(v)?
+                        .origin
+                })
                 .unwrap_or((self.case.first_line, 0));
             self.diag(severity, at, Some(&nl), var.as_deref(), problem, hint);
         }
@@ -1073,40 +1161,42 @@ impl<'a> Reader<'a> {
             if !at_end {
                 self.case = next;
                 self.carried = None;
-                self.assigned.clear();
-                self.seen.clear();
+                self.records.clear();
                 self.seen_naca.clear();
             }
             return;
         }
         self.check_counts();
+        let (namelists, origins) = materialize(&mut self.records, !self.case.save);
+        self.case.namelists = namelists;
+        self.case.origins = origins;
         if self.case.save {
-            next.namelists = self.case.namelists.clone();
             next.airfoils = self.case.airfoils.clone();
-            next.origins = self.case.origins.clone();
             self.carried = Some(self.case.cards.dim.unwrap_or_default());
+            for r in &mut self.records {
+                r.seen = false;
+                for v in &mut r.vars {
+                    v.assigned = 0;
+                }
+            }
         } else {
             self.carried = None;
+            self.records.clear();
         }
         let mut done = std::mem::replace(&mut self.case, next);
         done.number = self.cases.len() + 1;
         self.cases.push(done);
-        self.assigned.clear();
-        self.seen.clear();
         self.seen_naca.clear();
     }
 }
 
-/// A namelist of the current case that assignments are applied to, with the reader's records
-/// that assignments update.
+/// A namelist of the current case that assignments are applied to.
 struct Target<'r, 'd> {
-    /// The namelist's name (upper case) and its [`schema::key`].
+    /// The namelist's name (upper case).
     name: &'r str,
-    key: u64,
     table: &'static Table,
-    values: &'r mut NamelistValues,
-    origins: &'r mut Origins,
-    assigned: &'r mut Assigned,
+    /// The records of the namelist's variables, by their place in the table.
+    vars: &'r mut [VarRecord],
     diags: &'r mut Diags<'d>,
 }
 
@@ -1117,7 +1207,7 @@ impl Target<'_, '_> {
         let at = (a.line, a.column);
         let written: &str = &a.name;
         let canonical = schema::canonical(&self.table.spec.name, written);
-        let Some(var) = self.table.var(canonical) else {
+        let Some(index) = self.table.index(canonical) else {
             let near = schema::nearest(written, self.table.spec.vars.keys().map(String::as_str))
                 .map(|n| format!("did you mean {n}?"))
                 .or_else(|| {
@@ -1136,6 +1226,7 @@ impl Target<'_, '_> {
             );
             return;
         };
+        let var = self.table.vars()[index].1;
         let start = a.index.unwrap_or(1);
         let last = start.saturating_add(a.values.len().saturating_sub(1));
         if last > var.len {
@@ -1186,17 +1277,16 @@ impl Target<'_, '_> {
             return;
         }
         let end = last.min(var.len);
-        let var_key = schema::key(&var.name).expect("variable names are short");
-        let set = sorted_entry(self.assigned, (self.key, var_key));
+        let record = &mut self.vars[index];
         // Recorded up to the first element assigned before, as a search that stops there.
         let mut reassigned = false;
         for i in start..=end {
             let bit = 1u128 << i;
-            if *set & bit != 0 {
+            if record.assigned & bit != 0 {
                 reassigned = true;
                 break;
             }
-            *set |= bit;
+            record.assigned |= bit;
         }
         if reassigned {
             self.diags.push(
@@ -1210,16 +1300,11 @@ impl Target<'_, '_> {
                 None,
             );
         }
-        let entry = match self.values.get_mut(&var.name) {
-            Some(e) => e,
-            None => self
-                .values
-                .entry(var.name.clone())
-                .or_insert_with(|| match var.kind {
-                    Kind::Logical => Value::Logicals(Vec::new()),
-                    Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
-                }),
-        };
+        record.origin = Some(at);
+        let entry = record.value.get_or_insert_with(|| match var.kind {
+            Kind::Logical => Value::Logicals(Vec::new()),
+            Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
+        });
         // The elements written reach index `end` at most: room for them at once.
         match &mut *entry {
             Value::Numbers(v) => v.reserve(end.saturating_sub(v.len())),
@@ -1249,7 +1334,6 @@ impl Target<'_, '_> {
                 _ => {}
             }
         }
-        self.origins.insert_keys((self.key, var_key), at);
     }
 }
 
@@ -1273,8 +1357,7 @@ pub fn read(text: &str, file: &str) -> RawDeck {
         },
         cases: Vec::new(),
         case: RawCase::default(),
-        assigned: Assigned::new(),
-        seen: Vec::new(),
+        records: Vec::new(),
         seen_naca: Vec::new(),
         carried: None,
         open: None,
