@@ -319,13 +319,6 @@ fn token(i: &str) -> (usize, Tok<'_>) {
     })
 }
 
-/// A capacity for the tokens of `text` that most lines do not outgrow (values and their commas
-/// take two or three characters a token at the least), so that lexing a line does not grow its
-/// token list step by step.
-pub fn capacity_hint(text: &str) -> usize {
-    text.len() / 2 + 1
-}
-
 /// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.
 /// `first_column` is the 1-based column of the first character of `text`.
 pub fn lex_line<'a>(text: &'a str, line: usize, first_column: usize, out: &mut Vec<Token<'a>>) {

@@ -168,6 +168,8 @@ struct Open<'a> {
 
 /// Longest excerpt of deck text quoted in a message.
 const EXCERPT_CHARS: usize = 40;
+/// Tokens of a namelist body that the reader makes room for at once.
+const BODY_TOKENS: usize = 256;
 /// Most cards listed as swallowed by an unterminated namelist.
 const SWALLOWED_LISTED: usize = 8;
 
@@ -316,10 +318,9 @@ struct Reader<'a> {
     /// The current case began with data carried by SAVE, in this unit system.
     carried: Option<cards::Dim>,
     open: Option<Open<'a>>,
-    /// Tokens of the open namelist so far.
+    /// Tokens of the open namelist so far, then those of the line being read that are not
+    /// sorted yet (see [`Reader::feed`]). Lines are lexed straight into it.
     body: Vec<Token<'a>>,
-    /// Tokens of the line being read (kept to reuse its allocation).
-    line_tokens: Vec<Token<'a>>,
     lines: Vec<&'a str>,
 }
 
@@ -440,7 +441,8 @@ impl<'a> Reader<'a> {
         }
         if let Some(open) = self.open.take() {
             let hint = format!("(last line of the deck is {})", lines.len());
-            self.unterminated(open, vec!["the end of the deck".into()], &hint);
+            let len = self.body.len();
+            self.unterminated(open, len, vec!["the end of the deck".into()], &hint);
         }
         self.end_case(true);
         let mut diagnostics = self.diags.list;
@@ -582,7 +584,8 @@ impl<'a> Reader<'a> {
             if more > 0 {
                 swallowed.push(format!("{more} more cards"));
             }
-            self.unterminated(open, swallowed, &format!("before line {n}"));
+            let len = self.body.len();
+            self.unterminated(open, len, swallowed, &format!("before line {n}"));
             self.outside_line(n, text);
             return;
         }
@@ -594,66 +597,73 @@ impl<'a> Reader<'a> {
             );
         }
         self.open = Some(open);
-        let mut toks = self.lex(text, n);
-        self.feed(toks.drain(..));
-        self.line_tokens = toks;
+        let from = self.body.len();
+        lexer::lex_line(text, n, 1, &mut self.body);
+        self.feed(from);
     }
 
-    /// The tokens of line `n`, in the reused line buffer (to be put back after use).
-    fn lex(&mut self, text: &'a str, n: usize) -> Vec<Token<'a>> {
-        let mut toks = std::mem::take(&mut self.line_tokens);
-        toks.clear();
-        toks.reserve(lexer::capacity_hint(text));
-        lexer::lex_line(text, n, 1, &mut toks);
-        toks
-    }
-
-    /// Reads the tokens of a line: into the open namelist until `$` closes it; after that, a
-    /// `$NAME` opens the next one, and anything else on the line is stray.
-    fn feed(&mut self, toks: impl ExactSizeIterator<Item = Token<'a>>) {
-        if self.open.is_some() {
-            self.body.reserve(toks.len());
-        }
-        let mut stray: Vec<Token> = Vec::new();
-        for t in toks {
-            match &mut self.open {
-                Some(_) => match t.tok {
-                    Tok::Close => {
-                        let open = self.open.take().expect("open");
-                        self.close(open);
-                    }
-                    Tok::Open(name) if schema::table(&name).is_some() => {
-                        let open = self.open.take().expect("open");
-                        let swallowed = vec![format!("${name} (line {})", t.line)];
-                        self.unterminated(open, swallowed, &format!("before ${name}"));
-                        self.start(name, t.line, t.column);
-                    }
-                    tok => self.body.push(Token { tok, ..t }),
-                },
-                None => match t.tok {
-                    Tok::Open(name) => {
-                        self.stray(std::mem::take(&mut stray));
-                        self.start(name, t.line, t.column);
-                    }
-                    // `$$`: a doubled terminator; harmless.
-                    Tok::Close if stray.is_empty() => {}
-                    _ => stray.push(t),
-                },
+    /// Sorts the tokens of a line, lexed into [`Reader::body`] from index `from`: into the open
+    /// namelist until `$` closes it; after that, a `$NAME` opens the next one, and anything
+    /// else on the line is stray. Tokens before `from` are the open namelist's; with none open,
+    /// there are none.
+    fn feed(&mut self, from: usize) {
+        // Tokens before `i` are the open namelist's body, or the stray tokens so far.
+        let mut i = from;
+        while let Some(t) = self.body.get(i) {
+            match (&self.open, &t.tok) {
+                (Some(_), Tok::Close) => {
+                    let open = self.open.take().expect("open");
+                    self.close(open, i);
+                    self.body.drain(..1);
+                    i = 0;
+                }
+                (Some(_), Tok::Open(name)) if schema::table(name).is_some() => {
+                    let open = self.open.take().expect("open");
+                    let swallowed = vec![format!("${name} (line {})", t.line)];
+                    let where_to_close = format!("before ${name}");
+                    self.unterminated(open, i, swallowed, &where_to_close);
+                    self.start_at_body();
+                    i = 0;
+                }
+                (None, Tok::Open(_)) => {
+                    self.stray(i);
+                    self.start_at_body();
+                    i = 0;
+                }
+                // `$$`: a doubled terminator; harmless.
+                (None, Tok::Close) if i == 0 => {
+                    self.body.drain(..1);
+                }
+                _ => i += 1,
             }
         }
-        self.stray(stray);
+        if self.open.is_none() {
+            self.stray(self.body.len());
+        }
     }
 
-    /// Tokens after a closing `$` on the same card. Assignments there are lost in the original
-    /// too, so they are an error; other text a warning.
-    fn stray(&mut self, toks: Vec<Token<'_>>) {
+    /// Opens the namelist of the `$NAME` token first in [`Reader::body`], taking the token.
+    fn start_at_body(&mut self) {
+        let t = self.body.remove(0);
+        let Tok::Open(name) = t.tok else {
+            unreachable!("the caller found `$NAME` here");
+        };
+        self.start(name, t.line, t.column);
+    }
+
+    /// The first `len` tokens of [`Reader::body`], which came after a closing `$` on the same
+    /// card, taken and reported. Assignments there are lost in the original too, so they are an
+    /// error; other text a warning.
+    fn stray(&mut self, len: usize) {
+        let toks = &self.body[..len];
         let Some(first) = toks.first() else { return };
         let text: Vec<String> = toks.iter().take(8).map(|t| t.tok.text()).collect();
         let found = excerpt(&text.join(" "));
         let at = (first.line, first.column);
-        match has_assignment(&toks) {
+        let assigned = has_assignment(toks).map(str::to_string);
+        self.body.drain(..len);
+        match assigned {
             Some(var) => {
-                let var = var.to_string();
                 self.diag(
                     Severity::Error,
                     at,
@@ -702,7 +712,6 @@ impl<'a> Reader<'a> {
                 hint,
             );
         }
-        self.body.clear();
         self.open = Some(Open {
             name,
             table,
@@ -715,7 +724,10 @@ impl<'a> Reader<'a> {
         let trimmed = text.trim();
         let col = column_of(text, text.len() - text.trim_start().len());
         if trimmed.starts_with(['$', '&']) {
-            let mut toks = self.lex(text, n);
+            // With no namelist open, every token read before has been sorted.
+            debug_assert!(self.body.is_empty());
+            lexer::lex_line(text, n, 1, &mut self.body);
+            let toks = &self.body;
             // `$ NAME`: a blank between `$` and a namelist's name.
             if let (Some(Tok::Close), Some(Tok::Name(name))) =
                 (toks.first().map(|t| &t.tok), toks.get(1).map(|t| &t.tok))
@@ -735,26 +747,26 @@ impl<'a> Reader<'a> {
                         Some(format!("write ${name}; read here as ${name}")),
                     );
                     self.start(name, at.0, at.1);
-                    self.feed(toks.drain(2..));
-                    self.line_tokens = toks;
+                    self.body.drain(..2);
+                    self.feed(0);
                     return;
                 }
             }
             match toks.first().map(|t| &t.tok) {
-                Some(Tok::Open(_)) => {
-                    self.feed(toks.drain(..));
-                    self.line_tokens = toks;
+                Some(Tok::Open(_)) => self.feed(0),
+                _ => {
+                    self.body.clear();
+                    self.diag(
+                        Severity::Warning,
+                        (n, col),
+                        None,
+                        None,
+                        DeckProblem::TrailingText {
+                            found: excerpt(trimmed),
+                        },
+                        Some("a `$` outside a namelist closes nothing".into()),
+                    );
                 }
-                _ => self.diag(
-                    Severity::Warning,
-                    (n, col),
-                    None,
-                    None,
-                    DeckProblem::TrailingText {
-                        found: excerpt(trimmed),
-                    },
-                    Some("a `$` outside a namelist closes nothing".into()),
-                ),
             }
             return;
         }
@@ -923,8 +935,15 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// Reports a namelist never closed by `$`, then reads what it holds.
-    fn unterminated(&mut self, open: Open<'a>, swallowed: Vec<String>, where_to_close: &str) {
+    /// Reports a namelist never closed by `$`, then reads what it holds: the first `len` tokens
+    /// of [`Reader::body`].
+    fn unterminated(
+        &mut self,
+        open: Open<'a>,
+        len: usize,
+        swallowed: Vec<String>,
+        where_to_close: &str,
+    ) {
         self.diag(
             Severity::Error,
             (open.line, open.column),
@@ -937,11 +956,20 @@ impl<'a> Reader<'a> {
             },
             Some(format!("end ${} with `$` {where_to_close}", open.name)),
         );
-        self.close(open);
+        self.close(open, len);
     }
 
-    /// Applies a closed namelist's assignments to the current case.
-    fn close(&mut self, open: Open<'a>) {
+    /// Applies a closed namelist's assignments, its body the first `len` tokens of
+    /// [`Reader::body`], to the current case; the tokens are taken.
+    fn close(&mut self, open: Open<'a>, len: usize) {
+        // Out of the reader while the assignments are applied to it.
+        let mut body = std::mem::take(&mut self.body);
+        self.apply(open, &body[..len]);
+        body.drain(..len);
+        self.body = body;
+    }
+
+    fn apply(&mut self, open: Open<'a>, body: &[Token<'a>]) {
         if open.name == "EXPR00" {
             return;
         }
@@ -1023,7 +1051,7 @@ impl<'a> Reader<'a> {
             vars: &mut record.vars,
             diags: &mut found,
         };
-        let problems = namelist::parse_body(&self.body, |a| target.assign(a));
+        let problems = namelist::parse_body(body, |a| target.assign(a));
         for p in problems {
             self.diags.push(
                 Severity::Error,
@@ -1035,7 +1063,6 @@ impl<'a> Reader<'a> {
             );
         }
         self.diags.list.append(&mut found.list);
-        self.body.clear();
     }
 
     /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...), in
@@ -1361,8 +1388,9 @@ pub fn read(text: &str, file: &str) -> RawDeck {
         seen_naca: Vec::new(),
         carried: None,
         open: None,
-        body: Vec::new(),
-        line_tokens: Vec::new(),
+        // Room for the tokens of most namelists (a token a value, one a comma), so that the
+        // list seldom grows.
+        body: Vec::with_capacity(BODY_TOKENS),
         lines: split_lines(text),
     };
     reader.run()
