@@ -313,6 +313,8 @@ struct Reader<'a> {
     case: RawCase,
     /// The namelists of the current case, sorted by key.
     records: Vec<NamelistRecord<'a>>,
+    /// Room for the values of one assignment, reused by every namelist.
+    values: Vec<Lit>,
     /// Surfaces that had a NACA card in the current case.
     seen_naca: Vec<Surface>,
     /// The current case began with data carried by SAVE, in this unit system.
@@ -326,10 +328,16 @@ struct Reader<'a> {
 
 /// Splits deck text into lines: LF, CRLF or CR, final newline optional.
 fn split_lines(text: &str) -> Vec<&str> {
-    let mut out: Vec<&str> = text
-        .split('\n')
-        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'))
-        .collect();
+    let mut out = Vec::new();
+    for l in text.split('\n') {
+        let l = l.strip_suffix('\r').unwrap_or(l);
+        // Most decks end lines with LF or CRLF only: a lone CR is looked for once a line.
+        if l.as_bytes().contains(&b'\r') {
+            out.extend(l.split('\r'));
+        } else {
+            out.push(l);
+        }
+    }
     // A final line break leaves an empty piece after it.
     if (text.ends_with('\n') || text.ends_with('\r')) && out.last() == Some(&"") {
         out.pop();
@@ -513,7 +521,16 @@ impl<'a> Reader<'a> {
         }
         if !is_caseid {
             // A byte search: no byte of a multi-byte character is an ASCII letter.
-            if let Some(c) = text.bytes().position(|c| c.is_ascii_lowercase()) {
+            // Tested over the whole line first (a loop without early exit, which compiles to
+            // vector instructions): most lines have no lower case.
+            let bytes = text.as_bytes();
+            let any_lower = bytes
+                .iter()
+                .fold(false, |any, c| any | c.is_ascii_lowercase());
+            let first_lower = any_lower
+                .then(|| bytes.iter().position(u8::is_ascii_lowercase))
+                .flatten();
+            if let Some(c) = first_lower {
                 let col = column_of(text, c);
                 self.note_dialect(n, col, "lower case (the original reads upper case only)");
             }
@@ -1051,7 +1068,7 @@ impl<'a> Reader<'a> {
             vars: &mut record.vars,
             diags: &mut found,
         };
-        let problems = namelist::parse_body(body, |a| target.assign(a));
+        let problems = namelist::parse_body(body, &mut self.values, |a| target.assign(a));
         for p in problems {
             self.diags.push(
                 Severity::Error,
@@ -1385,6 +1402,7 @@ pub fn read(text: &str, file: &str) -> RawDeck {
         cases: Vec::new(),
         case: RawCase::default(),
         records: Vec::new(),
+        values: Vec::new(),
         seen_naca: Vec::new(),
         carried: None,
         open: None,
