@@ -367,7 +367,11 @@ mod tests {
         assert_eq!((p.card, p.extra.as_deref()), (Card::NextCase, Some("NOW")));
         assert_eq!(
             card("dim xx"),
-            Some(Card::Bad("DIM".into(), "FT, IN, M or CM".into(), "XX".into()))
+            Some(Card::Bad(
+                "DIM".into(),
+                "FT, IN, M or CM".into(),
+                "XX".into()
+            ))
         );
         assert_eq!(card("Dim cm"), Some(Card::Dim(Dim::Cm)));
         assert_eq!(card("print extrap"), Some(Card::PrintExtrap));

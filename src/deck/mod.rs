@@ -242,7 +242,14 @@ struct NamelistRecord<'a> {
     present: bool,
     /// The namelist appeared in the current case (data carried by SAVE does not count).
     seen: bool,
-    vars: Vec<VarRecord>,
+    /// Where its variables' records start in [`Records::vars`].
+    first: usize,
+}
+
+impl NamelistRecord<'_> {
+    fn var_range(&self) -> std::ops::Range<usize> {
+        self.first..self.first + self.table.vars().len()
+    }
 }
 
 #[derive(Clone, Default)]
@@ -254,56 +261,101 @@ struct VarRecord {
     origin: Option<(usize, usize)>,
 }
 
-impl NamelistRecord<'_> {
-    fn var(&self, name: &str) -> Option<&VarRecord> {
-        self.table.index(name).map(|i| &self.vars[i])
+/// The namelists of the current case, and the records of their variables in one list (one
+/// allocation for the case rather than one a namelist).
+#[derive(Default)]
+struct Records<'a> {
+    /// Sorted by key.
+    namelists: Vec<NamelistRecord<'a>>,
+    vars: Vec<VarRecord>,
+}
+
+impl<'a> Records<'a> {
+    /// Room for the namelists and variables of most cases at once.
+    fn with_capacity() -> Self {
+        Records {
+            namelists: Vec::with_capacity(16),
+            vars: Vec::with_capacity(256),
+        }
     }
 
-    /// The value of `name`, when the namelist is among the case's and the variable was set.
-    fn value(&self, name: &str) -> Option<&Value> {
-        self.var(name)
-            .filter(|_| self.present)
+    fn find(&self, key: u64) -> Option<&NamelistRecord<'a>> {
+        let i = self.namelists.binary_search_by_key(&key, |r| r.key).ok()?;
+        Some(&self.namelists[i])
+    }
+
+    fn vars(&self, r: &NamelistRecord) -> &[VarRecord] {
+        &self.vars[r.var_range()]
+    }
+
+    fn var(&self, r: &NamelistRecord, name: &str) -> Option<&VarRecord> {
+        r.table.index(name).map(|i| &self.vars(r)[i])
+    }
+
+    /// The value of `name` in `r`, when the namelist is among the case's and the variable was
+    /// set.
+    fn value(&self, r: &NamelistRecord, name: &str) -> Option<&Value> {
+        self.var(r, name)
+            .filter(|_| r.present)
             .and_then(|v| v.value.as_ref())
     }
-}
 
-/// The record of namelist `key` in `records` (sorted by key).
-fn find_record<'r, 'a>(
-    records: &'r [NamelistRecord<'a>],
-    key: u64,
-) -> Option<&'r NamelistRecord<'a>> {
-    let i = records.binary_search_by_key(&key, |r| r.key).ok()?;
-    Some(&records[i])
-}
-
-/// The case's namelists and the places of their assignments, from the records; the values
-/// are moved out of the records when `take`, else copied.
-fn materialize(
-    records: &mut [NamelistRecord],
-    take: bool,
-) -> (BTreeMap<String, NamelistValues>, Origins) {
-    let mut places = Vec::new();
-    let mut namelists = BTreeMap::new();
-    for r in records.iter_mut() {
-        let mut values = NamelistValues::new();
-        for (v, (var_key, spec)) in r.vars.iter_mut().zip(r.table.vars()) {
-            if let Some(at) = v.origin {
-                places.push(((r.key, *var_key), at));
+    /// The place of the namelist `open` (its name's key `key`, its schema `table`) in
+    /// [`Records::namelists`], added if missing.
+    fn entry(&mut self, open: &Open<'a>, key: u64, table: &'static Table) -> usize {
+        match self.namelists.binary_search_by_key(&key, |r| r.key) {
+            Ok(i) => i,
+            Err(i) => {
+                let first = self.vars.len();
+                let len = table.vars().len();
+                self.vars.resize(first + len, VarRecord::default());
+                let record = NamelistRecord {
+                    name: open.name.clone(),
+                    key,
+                    table,
+                    present: false,
+                    seen: false,
+                    first,
+                };
+                self.namelists.insert(i, record);
+                i
             }
-            let value = if take {
-                v.value.take()
-            } else {
-                v.value.clone()
-            };
-            if let Some(value) = value {
-                values.insert(spec.name.clone(), value);
-            }
-        }
-        if r.present {
-            namelists.insert(r.name.to_string(), values);
         }
     }
-    (namelists, Origins { places })
+
+    fn clear(&mut self) {
+        self.namelists.clear();
+        self.vars.clear();
+    }
+
+    /// The case's namelists and the places of their assignments; the values are moved out of
+    /// the records when `take`, else copied.
+    fn materialize(&mut self, take: bool) -> (BTreeMap<String, NamelistValues>, Origins) {
+        let assigned = self.vars.iter().filter(|v| v.origin.is_some()).count();
+        let mut places = Vec::with_capacity(assigned);
+        let mut namelists = BTreeMap::new();
+        for r in &self.namelists {
+            let mut values = NamelistValues::new();
+            let vars = &mut self.vars[r.var_range()];
+            for (v, (var_key, spec)) in vars.iter_mut().zip(r.table.vars()) {
+                if let Some(at) = v.origin {
+                    places.push(((r.key, *var_key), at));
+                }
+                let value = if take {
+                    v.value.take()
+                } else {
+                    v.value.clone()
+                };
+                if let Some(value) = value {
+                    values.insert(spec.name.clone(), value);
+                }
+            }
+            if r.present {
+                namelists.insert(r.name.to_string(), values);
+            }
+        }
+        (namelists, Origins { places })
+    }
 }
 
 struct Reader<'a> {
@@ -311,8 +363,7 @@ struct Reader<'a> {
     diags: Diags<'a>,
     cases: Vec<RawCase>,
     case: RawCase,
-    /// The namelists of the current case, sorted by key.
-    records: Vec<NamelistRecord<'a>>,
+    records: Records<'a>,
     /// Room for the values of one assignment, reused by every namelist.
     values: Vec<Lit>,
     /// Surfaces that had a NACA card in the current case.
@@ -352,9 +403,20 @@ fn is_comment(trimmed: &str) -> bool {
 
 /// Splits off a trailing `!` comment, returning the text before it.
 fn strip_bang(text: &str) -> (&str, bool) {
-    match text.find('!') {
+    match find_byte(text, b'!') {
         Some(i) => (&text[..i], true),
         None => (text, false),
+    }
+}
+
+/// The byte offset of the first `byte` (ASCII) in `text`. Most lines have none: a quick test
+/// for any comes first.
+fn find_byte(text: &str, byte: u8) -> Option<usize> {
+    let bytes = text.as_bytes();
+    if bytes.contains(&byte) {
+        bytes.iter().position(|b| *b == byte)
+    } else {
+        None
     }
 }
 
@@ -535,7 +597,7 @@ impl<'a> Reader<'a> {
                 self.note_dialect(n, col, "lower case (the original reads upper case only)");
             }
         }
-        if let Some(c) = raw.find('\t') {
+        if let Some(c) = find_byte(raw, b'\t') {
             self.note_dialect(n, column_of(raw, c), "a TAB character");
         }
         // A line of at most 80 bytes has at most 80 characters.
@@ -995,22 +1057,8 @@ impl<'a> Reader<'a> {
         };
         let name: &str = &open.name;
         let nl_key = schema::key(name).expect("known namelists have short names");
-        let i = match self.records.binary_search_by_key(&nl_key, |r| r.key) {
-            Ok(i) => i,
-            Err(i) => {
-                let record = NamelistRecord {
-                    name: open.name.clone(),
-                    key: nl_key,
-                    table,
-                    present: false,
-                    seen: false,
-                    vars: vec![VarRecord::default(); table.vars().len()],
-                };
-                self.records.insert(i, record);
-                i
-            }
-        };
-        if self.records[i].seen {
+        let i = self.records.entry(&open, nl_key, table);
+        if self.records.namelists[i].seen {
             self.diags.push(
                 Severity::Note,
                 (open.line, open.column),
@@ -1022,7 +1070,7 @@ impl<'a> Reader<'a> {
                 None,
             );
         } else {
-            self.records[i].seen = true;
+            self.records.namelists[i].seen = true;
         }
         // Symmetric and asymmetric flap data share storage in the original: reading one
         // clears the other.
@@ -1031,13 +1079,14 @@ impl<'a> Reader<'a> {
             "ASYFLP" => Some("SYMFLP"),
             _ => None,
         };
-        let rival_record = rival
-            .and_then(schema::key)
-            .and_then(|k| self.records.binary_search_by_key(&k, |r| r.key).ok());
+        let rival_record = rival.and_then(schema::key).and_then(|k| {
+            let records = &self.records.namelists;
+            records.binary_search_by_key(&k, |r| r.key).ok()
+        });
         if let (Some(rival), Some(r)) = (rival, rival_record) {
-            let record = &mut self.records[r];
+            let record = &mut self.records.namelists[r];
             if std::mem::take(&mut record.present) {
-                for v in &mut record.vars {
+                for v in &mut self.records.vars[record.var_range()] {
                     v.value = None;
                 }
                 self.diags.push(
@@ -1054,8 +1103,9 @@ impl<'a> Reader<'a> {
                 );
             }
         }
-        let record = &mut self.records[i];
+        let record = &mut self.records.namelists[i];
         record.present = true;
+        let vars = &mut self.records.vars[record.var_range()];
         // Assignments are applied as they are read; what they find wrong is reported after the
         // body's syntax problems.
         let mut found = Diags {
@@ -1065,7 +1115,7 @@ impl<'a> Reader<'a> {
         let mut target = Target {
             name,
             table,
-            vars: &mut record.vars,
+            vars,
             diags: &mut found,
         };
         let problems = namelist::parse_body(body, &mut self.values, |a| target.assign(a));
@@ -1102,10 +1152,10 @@ impl<'a> Reader<'a> {
             };
         let mut found = Vec::new();
         let nmach = schema::key("FLTCON")
-            .and_then(|k| find_record(&self.records, k))
-            .and_then(|r| r.value("NMACH"))
+            .and_then(|k| self.records.find(k))
+            .and_then(|r| self.records.value(r, "NMACH"))
             .and_then(Value::scalar);
-        for record in self.records.iter().filter(|r| r.present) {
+        for record in self.records.namelists.iter().filter(|r| r.present) {
             let nl = &record.name;
             if let (Some(nn), Some(nmach)) = (nl.strip_prefix("EXPR"), nmach) {
                 if nn.parse::<f64>().is_ok_and(|k| k > nmach) {
@@ -1122,7 +1172,8 @@ impl<'a> Reader<'a> {
                     ));
                 }
             }
-            for (v, (_, var)) in record.vars.iter().zip(record.table.vars()) {
+            let vars = self.records.vars(record);
+            for (v, (_, var)) in vars.iter().zip(record.table.vars()) {
                 let Some(value) = &v.value else { continue };
                 let name = &var.name;
                 let Some(count_var) = &var.count else {
@@ -1134,7 +1185,11 @@ impl<'a> Reader<'a> {
                 if count_var.contains('(') {
                     continue;
                 }
-                let Some(count) = record.value(count_var).and_then(Value::scalar) else {
+                let Some(count) = self
+                    .records
+                    .value(record, count_var)
+                    .and_then(Value::scalar)
+                else {
                     continue;
                 };
                 let given = value.leading_count();
@@ -1176,9 +1231,8 @@ impl<'a> Reader<'a> {
             let at = var
                 .as_ref()
                 .and_then(|v| {
-                    find_record(&self.records, schema::key(&nl)?)?
-                        .var(v)?
-                        .origin
+                    let record = self.records.find(schema::key(&nl)?)?;
+                    self.records.var(record, v)?.origin
                 })
                 .unwrap_or((self.case.first_line, 0));
             self.diag(severity, at, Some(&nl), var.as_deref(), problem, hint);
@@ -1211,17 +1265,17 @@ impl<'a> Reader<'a> {
             return;
         }
         self.check_counts();
-        let (namelists, origins) = materialize(&mut self.records, !self.case.save);
+        let (namelists, origins) = self.records.materialize(!self.case.save);
         self.case.namelists = namelists;
         self.case.origins = origins;
         if self.case.save {
             next.airfoils = self.case.airfoils.clone();
             self.carried = Some(self.case.cards.dim.unwrap_or_default());
-            for r in &mut self.records {
+            for r in &mut self.records.namelists {
                 r.seen = false;
-                for v in &mut r.vars {
-                    v.assigned = 0;
-                }
+            }
+            for v in &mut self.records.vars {
+                v.assigned = 0;
             }
         } else {
             self.carried = None;
@@ -1401,7 +1455,7 @@ pub fn read(text: &str, file: &str) -> RawDeck {
         },
         cases: Vec::new(),
         case: RawCase::default(),
-        records: Vec::new(),
+        records: Records::with_capacity(),
         values: Vec::new(),
         seen_naca: Vec::new(),
         carried: None,
