@@ -21,13 +21,57 @@ use crate::error::{DeckProblem, Diagnostic, Severity};
 pub use crate::methods::section::MaximumReading;
 pub use crate::methods::wing::ZeroLiftReading;
 
+/// Every value of a case by the [`schema::key`]s of its namelist's and its own name, sorted:
+/// lookups compare integers, not names. Longer names, which no namelist or variable has, are
+/// left out.
+struct ValueIndex<'a> {
+    entries: Vec<((u64, u64), &'a Value)>,
+}
+
+impl<'a> ValueIndex<'a> {
+    fn new(raw: &'a RawCase) -> ValueIndex<'a> {
+        let count = raw.namelists.values().map(NamelistValues::len).sum();
+        let mut entries = Vec::with_capacity(count);
+        // Keys order as the names do: the maps' order is the index's.
+        for (nl, values) in &raw.namelists {
+            let Some(nl) = schema::key(nl) else { continue };
+            let keyed = values
+                .iter()
+                .filter_map(|(var, v)| Some(((nl, schema::key(var)?), v)));
+            entries.extend(keyed);
+        }
+        ValueIndex { entries }
+    }
+
+    /// The entries of namelist `nl`.
+    fn namelist(&self, nl: &str) -> &[((u64, u64), &'a Value)] {
+        let Some(k) = schema::key(nl) else {
+            return &[];
+        };
+        let start = self.entries.partition_point(|((n, _), _)| *n < k);
+        let len = self.entries[start..].partition_point(|((n, _), _)| *n == k);
+        &self.entries[start..start + len]
+    }
+
+    fn get(&self, nl: &str, var: &str) -> Option<&'a Value> {
+        lookup(self.namelist(nl), var)
+    }
+}
+
+/// The value of variable `var` among the entries of one namelist.
+fn lookup<'a>(entries: &[((u64, u64), &'a Value)], var: &str) -> Option<&'a Value> {
+    let k = schema::key(var)?;
+    let i = entries.binary_search_by_key(&k, |((_, v), _)| *v).ok()?;
+    Some(entries[i].1)
+}
+
 /// Accessor over one namelist's values that converts to SI.
 struct Nl<'a> {
     /// The namelist's schema (looked up once, not for every variable read).
     table: Option<&'static schema::Table>,
     values: Option<&'a NamelistValues>,
-    /// The values by the [`schema::key`] of their names, for quick lookup.
-    by_key: Vec<(u64, &'a Value)>,
+    /// The namelist's entries in the case's [`ValueIndex`].
+    by_key: &'a [((u64, u64), &'a Value)],
     dim: Dim,
     /// SYNTHS SCALE, applied to the variables the schema marks as scaled geometry.
     scale: f64,
@@ -37,16 +81,10 @@ impl<'a> Nl<'a> {
     fn new(
         table: Option<&'static schema::Table>,
         values: Option<&'a NamelistValues>,
+        by_key: &'a [((u64, u64), &'a Value)],
         dim: Dim,
         scale: f64,
     ) -> Nl<'a> {
-        // Keys order as the names do: the map's order is the table's. Longer names, which no
-        // variable has, are left out.
-        let by_key = values
-            .into_iter()
-            .flatten()
-            .filter_map(|(name, v)| Some((schema::key(name)?, v)))
-            .collect();
         Nl {
             table,
             values,
@@ -84,9 +122,7 @@ impl<'a> Nl<'a> {
     }
 
     fn raw(&self, var: &str) -> Option<&'a Value> {
-        let k = schema::key(var)?;
-        let i = self.by_key.binary_search_by_key(&k, |(vk, _)| *vk).ok()?;
-        Some(self.by_key[i].1)
+        lookup(self.by_key, var)
     }
 
     /// Scalar in SI.
@@ -655,6 +691,7 @@ fn section(n: &Nl) -> SectionInput {
 struct Checks<'a> {
     file: &'a str,
     raw: &'a RawCase,
+    index: &'a ValueIndex<'a>,
     out: Vec<Diagnostic>,
 }
 
@@ -698,10 +735,8 @@ impl<'a> Checks<'a> {
 
     /// The deck's values of an array (or scalar), as written, with their 1-based indices.
     fn values(&self, card: &str, var: &str) -> impl Iterator<Item = (usize, f64)> + 'a {
-        self.raw
-            .namelists
-            .get(card)
-            .and_then(|n| n.get(var))
+        self.index
+            .get(card, var)
             .and_then(Value::numbers)
             .unwrap_or_default()
             .iter()
@@ -768,8 +803,17 @@ impl Case {
             .scalar("SYNTHS", "SCALE")
             .filter(|s| *s > 0.0)
             .unwrap_or(1.0);
-        let nl =
-            |name: &'static str| Nl::new(schema::table(name), raw.namelists.get(name), dim, scale);
+        let index = ValueIndex::new(raw);
+        let nl = |name: &'static str| {
+            let values = raw.namelists.get(name);
+            Nl::new(
+                schema::table(name),
+                values,
+                index.namelist(name),
+                dim,
+                scale,
+            )
+        };
         let has = |name: &str| raw.namelists.contains_key(name);
         let fl = nl("FLTCON");
         let op = nl("OPTINS");
@@ -906,6 +950,7 @@ impl Case {
         let mut checks = Checks {
             file,
             raw,
+            index: &index,
             out: Vec::new(),
         };
         case.check(&mut checks);

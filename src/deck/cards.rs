@@ -249,51 +249,77 @@ pub fn parse_card(text: &str, line: usize) -> Option<ParsedCard> {
     if !(begins("NACA") || begins("CASEID") || head.iter().all(u8::is_ascii_alphabetic)) {
         return None;
     }
-    let upper = trimmed.to_ascii_uppercase();
-    let words: Vec<&str> = upper.split_whitespace().collect();
-    let first = *words.first()?;
+    let mut words = trimmed.split_whitespace();
+    let first = words.next()?;
+    let second = words.next().unwrap_or("");
     let plain = |card: Card| ParsedCard { card, extra: None };
-    if first.starts_with("NACA") && (upper.len() == 4 || upper[4..].starts_with([' ', '-', '\t'])) {
-        return Some(plain(parse_naca(&upper, line)));
+    if begins("NACA") && (trimmed.len() == 4 || trimmed[4..].starts_with([' ', '-', '\t'])) {
+        return Some(plain(parse_naca(&trimmed.to_ascii_uppercase(), line)));
     }
-    if upper.starts_with("CASEID") {
+    if begins("CASEID") {
         return Some(plain(Card::CaseId(trimmed[6..].trim().to_string())));
     }
-    let arg = |n: usize| words.get(n).copied().unwrap_or("");
+    // Words are compared in any case and copied in upper case only into what the card keeps.
+    let is = |word: &str, keyword: &str| word.eq_ignore_ascii_case(keyword);
+    let rest = |used: usize| {
+        let rest: Vec<String> = trimmed
+            .split_whitespace()
+            .skip(used)
+            .map(str::to_ascii_uppercase)
+            .collect();
+        rest.join(" ")
+    };
+    let count = || trimmed.split_whitespace().count();
     // (card, number of words it uses)
-    let (card, used) = match first {
-        "NEXT" if arg(1) == "CASE" => (Card::NextCase, 2),
-        "SAVE" => (Card::Save, 1),
-        "DAMP" => (Card::Damp, 1),
-        "BUILD" => (Card::Build, 1),
-        "PART" => (Card::Part, 1),
-        "TRIM" => (Card::Trim, 1),
-        "PLOT" => (Card::Plot, 1),
-        "NAMELIST" => (Card::Namelist, 1),
-        "PRINT" if arg(1) == "EXTRAP" => (Card::PrintExtrap, 2),
-        "DIM" => {
-            let card = match arg(1) {
-                "FT" => Card::Dim(Dim::Ft),
-                "IN" => Card::Dim(Dim::In),
-                "M" => Card::Dim(Dim::M),
-                "CM" => Card::Dim(Dim::Cm),
-                other => Card::Bad("DIM".into(), "FT, IN, M or CM".into(), other.into()),
+    let keyword = KEYWORDS
+        .iter()
+        .filter_map(|k| k.split(' ').next())
+        .find(|k| is(first, k));
+    let (card, used) = match keyword {
+        Some("NEXT") if is(second, "CASE") => (Card::NextCase, 2),
+        Some("SAVE") => (Card::Save, 1),
+        Some("DAMP") => (Card::Damp, 1),
+        Some("BUILD") => (Card::Build, 1),
+        Some("PART") => (Card::Part, 1),
+        Some("TRIM") => (Card::Trim, 1),
+        Some("PLOT") => (Card::Plot, 1),
+        Some("NAMELIST") => (Card::Namelist, 1),
+        Some("PRINT") if is(second, "EXTRAP") => (Card::PrintExtrap, 2),
+        Some("DIM") => {
+            let dims = [Dim::Ft, Dim::In, Dim::M, Dim::Cm];
+            let card = match dims.into_iter().find(|d| is(second, d.name())) {
+                Some(d) => Card::Dim(d),
+                None => Card::Bad(
+                    "DIM".into(),
+                    "FT, IN, M or CM".into(),
+                    second.to_ascii_uppercase(),
+                ),
             };
             (card, 2)
         }
-        "DERIV" => {
-            let card = match arg(1) {
-                "DEG" => Card::Deriv(DerivUnit::Deg),
-                "RAD" => Card::Deriv(DerivUnit::Rad),
-                other => Card::Bad("DERIV".into(), "DEG or RAD".into(), other.into()),
+        Some("DERIV") => {
+            let card = if is(second, "DEG") {
+                Card::Deriv(DerivUnit::Deg)
+            } else if is(second, "RAD") {
+                Card::Deriv(DerivUnit::Rad)
+            } else {
+                Card::Bad(
+                    "DERIV".into(),
+                    "DEG or RAD".into(),
+                    second.to_ascii_uppercase(),
+                )
             };
             (card, 2)
         }
-        "DUMP" => (Card::Dump(words[1..].join(" ")), words.len()),
-        "WRITE" => (Card::Write(words[1..].join(" ")), words.len()),
+        Some("DUMP") => (Card::Dump(rest(1)), count()),
+        Some("WRITE") => (Card::Write(rest(1)), count()),
         _ => return None,
     };
-    let extra = (words.len() > used).then(|| words[used..].join(" "));
+    let extra = trimmed
+        .split_whitespace()
+        .nth(used)
+        .is_some()
+        .then(|| rest(used));
     Some(ParsedCard { card, extra })
 }
 
@@ -330,6 +356,29 @@ mod tests {
             Some(Card::CaseId("NAVION, ELEVATOR".into()))
         );
         assert_eq!(card("SAVSI=1.0"), None);
+    }
+
+    #[test]
+    fn any_case_read_and_kept_in_upper_case() {
+        let p = parse_card("dump case all", 1).unwrap();
+        assert_eq!(p.card, Card::Dump("CASE ALL".into()));
+        assert_eq!(p.extra, None);
+        let p = parse_card("next case now", 1).unwrap();
+        assert_eq!((p.card, p.extra.as_deref()), (Card::NextCase, Some("NOW")));
+        assert_eq!(
+            card("dim xx"),
+            Some(Card::Bad(
+                "DIM".into(),
+                "FT, IN, M or CM".into(),
+                "XX".into()
+            ))
+        );
+        assert_eq!(card("Dim cm"), Some(Card::Dim(Dim::Cm)));
+        assert_eq!(card("print extrap"), Some(Card::PrintExtrap));
+        assert_eq!(card("print"), None);
+        assert_eq!(card("NACAX W 4 0012"), None);
+        assert_eq!(card("NACA\u{2003}W 4 0012"), None);
+        assert_eq!(card("WRITE"), Some(Card::Write(String::new())));
     }
 
     #[test]

@@ -3,14 +3,17 @@
 //! The grammar above lexemes (assignments, value lists, recovery) is in `namelist.rs`: it needs
 //! look-ahead across lines and error recovery, which is clearer written over tokens. Tokens
 //! borrow their text from the line: reading a deck copies no names or numbers.
+//!
+//! The recognisers work on the line's bytes: every lexeme but `Other` is ASCII, so a byte is a
+//! character there, and byte predicates spare the UTF-8 decoding of `char` input.
 
 use std::borrow::Cow;
 
 use nom::branch::alt;
-use nom::bytes::complete::{tag_no_case, take_while, take_while_m_n};
-use nom::character::complete::{char, digit0, digit1, one_of};
-use nom::combinator::{consumed, opt, recognize};
-use nom::sequence::{pair, tuple};
+use nom::bytes::complete::{tag_no_case, take_while1};
+use nom::character::complete::{char, digit0, digit1, satisfy};
+use nom::combinator::{opt, verify};
+use nom::sequence::{pair, preceded, tuple};
 use nom::IResult;
 
 /// A lexeme of namelist text.
@@ -91,81 +94,183 @@ pub fn upper(s: &str) -> Cow<'_, str> {
     }
 }
 
-fn is_name_start(c: char) -> bool {
-    c.is_ascii_alphabetic()
-}
-
-fn is_name_char(c: char) -> bool {
-    c.is_ascii_alphanumeric() || c == '_'
+fn is_name_char(c: u8) -> bool {
+    c.is_ascii_alphanumeric() || c == b'_'
 }
 
 /// A name: a letter, then letters, digits and `_`.
-fn name(i: &str) -> IResult<&str, &str> {
-    recognize(pair(
-        take_while_m_n(1, 1, is_name_start),
-        take_while(is_name_char),
-    ))(i)
+fn name(i: &[u8]) -> IResult<&[u8], &[u8]> {
+    verify(take_while1(is_name_char), |n: &[u8]| {
+        n[0].is_ascii_alphabetic()
+    })(i)
 }
 
-/// `$NAME`, `$END` or a bare `$` (and the same with `&`).
-fn open_or_close(i: &str) -> IResult<&str, Tok<'_>> {
-    let (rest, _) = one_of("$&")(i)?;
+/// `$NAME`, `$END` or a bare `$` (and the same with `&`); the name's length in bytes.
+fn open_or_close(i: &[u8]) -> IResult<&[u8], Option<usize>> {
+    let (rest, _) = satisfy(|c| matches!(c, '$' | '&'))(i)?;
     match name(rest) {
-        Ok((after, n)) if n.eq_ignore_ascii_case("END") => Ok((after, Tok::Close)),
-        Ok((after, n)) => Ok((after, Tok::Open(upper(n)))),
-        Err(_) => Ok((rest, Tok::Close)),
+        Ok((after, n)) if n.eq_ignore_ascii_case(b"END") => Ok((after, None)),
+        Ok((after, n)) => Ok((after, Some(n.len()))),
+        Err(_) => Ok((rest, None)),
     }
 }
 
 /// `.TRUE.`, `.FALSE.`, `.T.` or `.F.`, any case.
-fn logical(i: &str) -> IResult<&str, Tok<'_>> {
+fn logical(i: &[u8]) -> IResult<&[u8], bool> {
     let (rest, word) = alt((
         tag_no_case(".TRUE."),
         tag_no_case(".FALSE."),
         tag_no_case(".T."),
         tag_no_case(".F."),
     ))(i)?;
-    let value = word.as_bytes()[1].eq_ignore_ascii_case(&b'T');
-    Ok((rest, Tok::Logical(value)))
+    Ok((rest, word[1].eq_ignore_ascii_case(&b'T')))
 }
 
-fn exponent(i: &str) -> IResult<&str, &str> {
-    recognize(tuple((one_of("eEdD"), opt(one_of("+-")), digit1)))(i)
+/// The parts of a number as written: digits before and after the point, and the exponent.
+struct Numeral<'a> {
+    negative: bool,
+    whole: &'a [u8],
+    /// The digits after `.`; `None` without a point.
+    fraction: Option<&'a [u8]>,
+    exponent: Option<Exponent<'a>>,
 }
 
-fn mantissa(i: &str) -> IResult<&str, &str> {
+struct Exponent<'a> {
+    /// A Fortran `D` (double precision) exponent rather than `E`.
+    fortran: bool,
+    negative: bool,
+    digits: &'a [u8],
+}
+
+fn sign(i: &[u8]) -> IResult<&[u8], bool> {
+    let (rest, s) = opt(satisfy(|c| matches!(c, '+' | '-')))(i)?;
+    Ok((rest, s == Some('-')))
+}
+
+fn exponent(i: &[u8]) -> IResult<&[u8], Exponent<'_>> {
+    let (rest, (letter, negative, digits)) = tuple((
+        satisfy(|c| matches!(c, 'e' | 'E' | 'd' | 'D')),
+        sign,
+        digit1,
+    ))(i)?;
+    let fortran = matches!(letter, 'd' | 'D');
+    Ok((
+        rest,
+        Exponent {
+            fortran,
+            negative,
+            digits,
+        },
+    ))
+}
+
+/// The digits before the point, and after it (`None` without a point).
+type Mantissa<'a> = (&'a [u8], Option<&'a [u8]>);
+
+/// `.` and a fraction, with no digits before the point.
+fn fraction_only(i: &[u8]) -> IResult<&[u8], Mantissa<'_>> {
+    let (rest, fraction) = preceded(char('.'), digit1)(i)?;
+    Ok((rest, (&i[..0], Some(fraction))))
+}
+
+/// Digits with an optional `.` and fraction, or `.` and a fraction.
+fn mantissa(i: &[u8]) -> IResult<&[u8], Mantissa<'_>> {
     alt((
-        recognize(pair(digit1, opt(pair(char('.'), digit0)))),
-        recognize(pair(char('.'), digit1)),
+        pair(digit1, opt(preceded(char('.'), digit0))),
+        fraction_only,
     ))(i)
 }
 
 /// A number: optional sign, digits with an optional `.` and fraction (or `.` and a fraction),
 /// optional exponent `E`/`D` with optional sign and digits.
-fn number(i: &str) -> IResult<&str, Tok<'_>> {
-    let (rest, (text, exp)) = consumed(tuple((opt(one_of("+-")), mantissa, opt(exponent))))(i)?;
-    let (_, mantissa_text, exp) = exp;
-    let integer = exp.is_none() && !mantissa_text.contains('.');
-    // `number` accepts only digits, one dot, sign and exponent, which f64 parses once a
-    // Fortran `D` exponent reads `E`; a number beyond the f64 range becomes infinite and the
-    // parser reports it.
-    let parsed = match exp {
-        Some(e) if e.starts_with(['d', 'D']) => text.replace(['d', 'D'], "E").parse::<f64>(),
-        _ => text.parse::<f64>(),
-    };
-    let value = parsed.unwrap_or(f64::INFINITY);
+fn numeral(i: &[u8]) -> IResult<&[u8], Numeral<'_>> {
+    let (rest, (negative, (whole, fraction), exponent)) =
+        tuple((sign, mantissa, opt(exponent)))(i)?;
     Ok((
         rest,
-        Tok::Number {
-            value,
-            integer,
-            text,
+        Numeral {
+            negative,
+            whole,
+            fraction,
+            exponent,
         },
     ))
 }
 
-fn punct(i: &str) -> IResult<&str, Tok<'_>> {
-    let (rest, c) = one_of("(),=*")(i)?;
+/// Powers of ten that `f64` holds exactly.
+const EXACT_POWERS_OF_TEN: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+impl Numeral<'_> {
+    /// The value when it is one exactly rounded operation on exact operands (Clinger's fast
+    /// path: at most 2^53 in the digits, a power of ten up to 1e22), which is then the
+    /// correctly rounded value `str::parse` gives too; `None` otherwise. Deck numbers are short
+    /// decimals: nearly all take this path.
+    fn exact_value(&self) -> Option<f64> {
+        let fraction = self.fraction.unwrap_or_default();
+        let mut digits = 0u64;
+        let mut significant = 0;
+        for &d in self.whole.iter().chain(fraction) {
+            if digits == 0 && d == b'0' {
+                continue;
+            }
+            significant += 1;
+            if significant > 16 {
+                return None;
+            }
+            digits = digits * 10 + u64::from(d - b'0');
+        }
+        if digits > 1 << 53 {
+            return None;
+        }
+        let mut power = -i64::try_from(fraction.len()).ok()?;
+        if let Some(e) = &self.exponent {
+            if e.digits.len() > 4 {
+                return None;
+            }
+            let n = e
+                .digits
+                .iter()
+                .fold(0i64, |n, &d| n * 10 + i64::from(d - b'0'));
+            power += if e.negative { -n } else { n };
+        }
+        let magnitude = if digits == 0 {
+            0.0
+        } else {
+            let scale = EXACT_POWERS_OF_TEN.get(usize::try_from(power.unsigned_abs()).ok()?)?;
+            if power < 0 {
+                digits as f64 / scale
+            } else {
+                digits as f64 * scale
+            }
+        };
+        Some(if self.negative { -magnitude } else { magnitude })
+    }
+}
+
+/// A number token of `text`, which `numeral` recognised in full.
+fn number_token<'a>(text: &'a str, n: &Numeral) -> Tok<'a> {
+    let integer = n.exponent.is_none() && n.fraction.is_none();
+    // A number beyond the f64 range becomes infinite and the parser reports it. `str::parse`
+    // reads what `numeral` accepts once a Fortran `D` exponent reads `E`.
+    let value = n.exact_value().unwrap_or_else(|| {
+        let parsed = match &n.exponent {
+            Some(e) if e.fortran => text.replace(['d', 'D'], "E").parse::<f64>(),
+            _ => text.parse::<f64>(),
+        };
+        parsed.unwrap_or(f64::INFINITY)
+    });
+    Tok::Number {
+        value,
+        integer,
+        text,
+    }
+}
+
+fn punct(i: &[u8]) -> IResult<&[u8], Tok<'static>> {
+    let (rest, c) = satisfy(|c| matches!(c, '(' | ')' | ',' | '=' | '*'))(i)?;
     let t = match c {
         '(' => Tok::LParen,
         ')' => Tok::RParen,
@@ -176,35 +281,42 @@ fn punct(i: &str) -> IResult<&str, Tok<'_>> {
     Ok((rest, t))
 }
 
-fn name_token(i: &str) -> IResult<&str, Tok<'_>> {
-    name(i).map(|(r, n)| (r, Tok::Name(upper(n))))
-}
-
 /// One lexeme and its length in bytes. The first character decides which lexemes can start
 /// here (the same choice as trying open/close, logical, number, punctuation and name in turn,
 /// without the failed tries); anything that starts none is one character of `Other`.
 fn token(i: &str) -> (usize, Tok<'_>) {
-    let found = match i.as_bytes()[0] {
-        b'$' | b'&' => open_or_close(i),
-        b'.' => alt((logical, number))(i),
-        b'0'..=b'9' | b'+' | b'-' => number(i),
-        b'(' | b')' | b',' | b'=' | b'*' => punct(i),
-        _ => name_token(i),
+    let b = i.as_bytes();
+    let rest_len = |rest: &[u8]| b.len() - rest.len();
+    let found = match b[0] {
+        b'$' | b'&' => open_or_close(b).map(|(rest, name)| {
+            let len = rest_len(rest);
+            let tok = match name {
+                Some(n) => Tok::Open(upper(&i[len - n..len])),
+                None => Tok::Close,
+            };
+            (len, tok)
+        }),
+        b'.' => match logical(b) {
+            Ok((rest, value)) => Ok((rest_len(rest), Tok::Logical(value))),
+            Err(_) => numeral(b).map(|(rest, n)| {
+                let len = rest_len(rest);
+                (len, number_token(&i[..len], &n))
+            }),
+        },
+        b'0'..=b'9' | b'+' | b'-' => numeral(b).map(|(rest, n)| {
+            let len = rest_len(rest);
+            (len, number_token(&i[..len], &n))
+        }),
+        b'(' | b')' | b',' | b'=' | b'*' => punct(b).map(|(rest, t)| (rest_len(rest), t)),
+        _ => name(b).map(|(rest, _)| {
+            let len = rest_len(rest);
+            (len, Tok::Name(upper(&i[..len])))
+        }),
     };
-    match found {
-        Ok((rest, tok)) => (i.len() - rest.len(), tok),
-        Err(_) => {
-            let c = i.chars().next().unwrap_or_default();
-            (c.len_utf8(), Tok::Other(c))
-        }
-    }
-}
-
-/// A capacity for the tokens of `text` that most lines do not outgrow (values and their commas
-/// take two or three characters a token at the least), so that lexing a line does not grow its
-/// token list step by step.
-pub fn capacity_hint(text: &str) -> usize {
-    text.len() / 2 + 1
+    found.unwrap_or_else(|_: nom::Err<nom::error::Error<&[u8]>>| {
+        let c = i.chars().next().unwrap_or_default();
+        (c.len_utf8(), Tok::Other(c))
+    })
 }
 
 /// Splits one line of namelist text (already stripped of a trailing `!` comment) into tokens.
@@ -253,6 +365,57 @@ mod tests {
                 [Tok::Number { value, integer, .. }] => {
                     assert_eq!(*value, v, "{s}");
                     assert_eq!(*integer, int, "{s}");
+                }
+                other => panic!("{s}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn values_are_what_str_parse_reads() {
+        let mut spellings: Vec<String> = [
+            "0",
+            "-0",
+            "-0.0",
+            "0.1",
+            "0.3",
+            "1.07E6",
+            "0.0588",
+            "1E22",
+            "1E23",
+            "9007199254740993",
+            "9007199254740992",
+            "123456789012345678",
+            ".1E-22",
+            "1E-23",
+            "17.0D-3",
+            "4.9E-324",
+            "1.8E308",
+            "2E308",
+            "0E999",
+            "00000000000000000000001.5",
+            "3.14159265358979323846",
+            "1.000000000000000000",
+            "-6.0",
+            "+.5",
+            "12345.6789E-10",
+        ]
+        .map(String::from)
+        .to_vec();
+        for i in 0..2000u32 {
+            let mantissa = i.wrapping_mul(2_654_435_761) % 100_000;
+            let point = i % 7;
+            let exp = i % 61;
+            let digits = mantissa.to_string();
+            let (a, b) = digits.split_at((point as usize).min(digits.len()));
+            spellings.push(format!("{a}.{b}E{}", exp as i32 - 30));
+            spellings.push(format!("-{a}.{b}"));
+        }
+        for s in &spellings {
+            let expect = s.replace('D', "E").parse::<f64>().unwrap();
+            match &toks(s)[..] {
+                [Tok::Number { value, .. }] => {
+                    assert_eq!(value.to_bits(), expect.to_bits(), "{s}");
                 }
                 other => panic!("{s}: {other:?}"),
             }

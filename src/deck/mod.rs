@@ -168,6 +168,8 @@ struct Open<'a> {
 
 /// Longest excerpt of deck text quoted in a message.
 const EXCERPT_CHARS: usize = 40;
+/// Tokens of a namelist body that the reader makes room for at once.
+const BODY_TOKENS: usize = 256;
 /// Most cards listed as swallowed by an unterminated namelist.
 const SWALLOWED_LISTED: usize = 8;
 
@@ -225,36 +227,168 @@ impl Diags<'_> {
     }
 }
 
-/// Elements assigned in the current case: a set of indices (bit `i` for element `i`) by the
-/// [`schema::key`]s of namelist and variable, sorted by key (see [`sorted_entry`]).
-type Assigned = Vec<((u64, u64), u128)>;
+/// What the current case holds of one namelist: a record for each variable of its schema, at
+/// the variable's place in [`Table::vars`]. The case's map of values and its [`Origins`] are
+/// made from these when the case ends; while reading, an assignment finds its variable by
+/// index instead of through maps keyed by name.
+#[derive(Clone)]
+struct NamelistRecord<'a> {
+    name: Cow<'a, str>,
+    /// The [`schema::key`] of the name; records are sorted by it, which is the order of names.
+    key: u64,
+    table: &'static Table,
+    /// The namelist is among the case's namelists (`$SYMFLP` and `$ASYFLP` remove each other;
+    /// the places of their assignments stay recorded).
+    present: bool,
+    /// The namelist appeared in the current case (data carried by SAVE does not count).
+    seen: bool,
+    /// Where its variables' records start in [`Records::vars`].
+    first: usize,
+}
+
+impl NamelistRecord<'_> {
+    fn var_range(&self) -> std::ops::Range<usize> {
+        self.first..self.first + self.table.vars().len()
+    }
+}
+
+#[derive(Clone, Default)]
+struct VarRecord {
+    value: Option<Value>,
+    /// Elements assigned in the current case: bit `i` for element `i`.
+    assigned: u128,
+    /// Where the variable was last assigned (line, column).
+    origin: Option<(usize, usize)>,
+}
+
+/// The namelists of the current case, and the records of their variables in one list (one
+/// allocation for the case rather than one a namelist).
+#[derive(Default)]
+struct Records<'a> {
+    /// Sorted by key.
+    namelists: Vec<NamelistRecord<'a>>,
+    vars: Vec<VarRecord>,
+}
+
+impl<'a> Records<'a> {
+    /// Room for the namelists and variables of most cases at once.
+    fn with_capacity() -> Self {
+        Records {
+            namelists: Vec::with_capacity(16),
+            vars: Vec::with_capacity(256),
+        }
+    }
+
+    fn find(&self, key: u64) -> Option<&NamelistRecord<'a>> {
+        let i = self.namelists.binary_search_by_key(&key, |r| r.key).ok()?;
+        Some(&self.namelists[i])
+    }
+
+    fn vars(&self, r: &NamelistRecord) -> &[VarRecord] {
+        &self.vars[r.var_range()]
+    }
+
+    fn var(&self, r: &NamelistRecord, name: &str) -> Option<&VarRecord> {
+        r.table.index(name).map(|i| &self.vars(r)[i])
+    }
+
+    /// The value of `name` in `r`, when the namelist is among the case's and the variable was
+    /// set.
+    fn value(&self, r: &NamelistRecord, name: &str) -> Option<&Value> {
+        self.var(r, name)
+            .filter(|_| r.present)
+            .and_then(|v| v.value.as_ref())
+    }
+
+    /// The place of the namelist `open` (its name's key `key`, its schema `table`) in
+    /// [`Records::namelists`], added if missing.
+    fn entry(&mut self, open: &Open<'a>, key: u64, table: &'static Table) -> usize {
+        match self.namelists.binary_search_by_key(&key, |r| r.key) {
+            Ok(i) => i,
+            Err(i) => {
+                let first = self.vars.len();
+                let len = table.vars().len();
+                self.vars.resize(first + len, VarRecord::default());
+                let record = NamelistRecord {
+                    name: open.name.clone(),
+                    key,
+                    table,
+                    present: false,
+                    seen: false,
+                    first,
+                };
+                self.namelists.insert(i, record);
+                i
+            }
+        }
+    }
+
+    fn clear(&mut self) {
+        self.namelists.clear();
+        self.vars.clear();
+    }
+
+    /// The case's namelists and the places of their assignments; the values are moved out of
+    /// the records when `take`, else copied.
+    fn materialize(&mut self, take: bool) -> (BTreeMap<String, NamelistValues>, Origins) {
+        let assigned = self.vars.iter().filter(|v| v.origin.is_some()).count();
+        let mut places = Vec::with_capacity(assigned);
+        let mut namelists = BTreeMap::new();
+        for r in &self.namelists {
+            let mut values = NamelistValues::new();
+            let vars = &mut self.vars[r.var_range()];
+            for (v, (var_key, spec)) in vars.iter_mut().zip(r.table.vars()) {
+                if let Some(at) = v.origin {
+                    places.push(((r.key, *var_key), at));
+                }
+                let value = if take {
+                    v.value.take()
+                } else {
+                    v.value.clone()
+                };
+                if let Some(value) = value {
+                    values.insert(spec.name.clone(), value);
+                }
+            }
+            if r.present {
+                namelists.insert(r.name.to_string(), values);
+            }
+        }
+        (namelists, Origins { places })
+    }
+}
 
 struct Reader<'a> {
     file: &'a str,
     diags: Diags<'a>,
     cases: Vec<RawCase>,
     case: RawCase,
-    assigned: Assigned,
-    /// Namelists that appeared in the current case, by [`schema::key`].
-    seen: Vec<u64>,
+    records: Records<'a>,
+    /// Room for the values of one assignment, reused by every namelist.
+    values: Vec<Lit>,
     /// Surfaces that had a NACA card in the current case.
     seen_naca: Vec<Surface>,
     /// The current case began with data carried by SAVE, in this unit system.
     carried: Option<cards::Dim>,
     open: Option<Open<'a>>,
-    /// Tokens of the open namelist so far.
+    /// Tokens of the open namelist so far, then those of the line being read that are not
+    /// sorted yet (see [`Reader::feed`]). Lines are lexed straight into it.
     body: Vec<Token<'a>>,
-    /// Tokens of the line being read (kept to reuse its allocation).
-    line_tokens: Vec<Token<'a>>,
     lines: Vec<&'a str>,
 }
 
 /// Splits deck text into lines: LF, CRLF or CR, final newline optional.
 fn split_lines(text: &str) -> Vec<&str> {
-    let mut out: Vec<&str> = text
-        .split('\n')
-        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'))
-        .collect();
+    let mut out = Vec::new();
+    for l in text.split('\n') {
+        let l = l.strip_suffix('\r').unwrap_or(l);
+        // Most decks end lines with LF or CRLF only: a lone CR is looked for once a line.
+        if l.as_bytes().contains(&b'\r') {
+            out.extend(l.split('\r'));
+        } else {
+            out.push(l);
+        }
+    }
     // A final line break leaves an empty piece after it.
     if (text.ends_with('\n') || text.ends_with('\r')) && out.last() == Some(&"") {
         out.pop();
@@ -269,9 +403,20 @@ fn is_comment(trimmed: &str) -> bool {
 
 /// Splits off a trailing `!` comment, returning the text before it.
 fn strip_bang(text: &str) -> (&str, bool) {
-    match text.find('!') {
+    match find_byte(text, b'!') {
         Some(i) => (&text[..i], true),
         None => (text, false),
+    }
+}
+
+/// The byte offset of the first `byte` (ASCII) in `text`. Most lines have none: a quick test
+/// for any comes first.
+fn find_byte(text: &str, byte: u8) -> Option<usize> {
+    let bytes = text.as_bytes();
+    if bytes.contains(&byte) {
+        bytes.iter().position(|b| *b == byte)
+    } else {
+        None
     }
 }
 
@@ -366,7 +511,8 @@ impl<'a> Reader<'a> {
         }
         if let Some(open) = self.open.take() {
             let hint = format!("(last line of the deck is {})", lines.len());
-            self.unterminated(open, vec!["the end of the deck".into()], &hint);
+            let len = self.body.len();
+            self.unterminated(open, len, vec!["the end of the deck".into()], &hint);
         }
         self.end_case(true);
         let mut diagnostics = self.diags.list;
@@ -437,12 +583,21 @@ impl<'a> Reader<'a> {
         }
         if !is_caseid {
             // A byte search: no byte of a multi-byte character is an ASCII letter.
-            if let Some(c) = text.bytes().position(|c| c.is_ascii_lowercase()) {
+            // Tested over the whole line first (a loop without early exit, which compiles to
+            // vector instructions): most lines have no lower case.
+            let bytes = text.as_bytes();
+            let any_lower = bytes
+                .iter()
+                .fold(false, |any, c| any | c.is_ascii_lowercase());
+            let first_lower = any_lower
+                .then(|| bytes.iter().position(u8::is_ascii_lowercase))
+                .flatten();
+            if let Some(c) = first_lower {
                 let col = column_of(text, c);
                 self.note_dialect(n, col, "lower case (the original reads upper case only)");
             }
         }
-        if let Some(c) = raw.find('\t') {
+        if let Some(c) = find_byte(raw, b'\t') {
             self.note_dialect(n, column_of(raw, c), "a TAB character");
         }
         // A line of at most 80 bytes has at most 80 characters.
@@ -508,7 +663,8 @@ impl<'a> Reader<'a> {
             if more > 0 {
                 swallowed.push(format!("{more} more cards"));
             }
-            self.unterminated(open, swallowed, &format!("before line {n}"));
+            let len = self.body.len();
+            self.unterminated(open, len, swallowed, &format!("before line {n}"));
             self.outside_line(n, text);
             return;
         }
@@ -520,66 +676,73 @@ impl<'a> Reader<'a> {
             );
         }
         self.open = Some(open);
-        let mut toks = self.lex(text, n);
-        self.feed(toks.drain(..));
-        self.line_tokens = toks;
+        let from = self.body.len();
+        lexer::lex_line(text, n, 1, &mut self.body);
+        self.feed(from);
     }
 
-    /// The tokens of line `n`, in the reused line buffer (to be put back after use).
-    fn lex(&mut self, text: &'a str, n: usize) -> Vec<Token<'a>> {
-        let mut toks = std::mem::take(&mut self.line_tokens);
-        toks.clear();
-        toks.reserve(lexer::capacity_hint(text));
-        lexer::lex_line(text, n, 1, &mut toks);
-        toks
-    }
-
-    /// Reads the tokens of a line: into the open namelist until `$` closes it; after that, a
-    /// `$NAME` opens the next one, and anything else on the line is stray.
-    fn feed(&mut self, toks: impl ExactSizeIterator<Item = Token<'a>>) {
-        if self.open.is_some() {
-            self.body.reserve(toks.len());
-        }
-        let mut stray: Vec<Token> = Vec::new();
-        for t in toks {
-            match &mut self.open {
-                Some(_) => match t.tok {
-                    Tok::Close => {
-                        let open = self.open.take().expect("open");
-                        self.close(open);
-                    }
-                    Tok::Open(name) if schema::table(&name).is_some() => {
-                        let open = self.open.take().expect("open");
-                        let swallowed = vec![format!("${name} (line {})", t.line)];
-                        self.unterminated(open, swallowed, &format!("before ${name}"));
-                        self.start(name, t.line, t.column);
-                    }
-                    tok => self.body.push(Token { tok, ..t }),
-                },
-                None => match t.tok {
-                    Tok::Open(name) => {
-                        self.stray(std::mem::take(&mut stray));
-                        self.start(name, t.line, t.column);
-                    }
-                    // `$$`: a doubled terminator; harmless.
-                    Tok::Close if stray.is_empty() => {}
-                    _ => stray.push(t),
-                },
+    /// Sorts the tokens of a line, lexed into [`Reader::body`] from index `from`: into the open
+    /// namelist until `$` closes it; after that, a `$NAME` opens the next one, and anything
+    /// else on the line is stray. Tokens before `from` are the open namelist's; with none open,
+    /// there are none.
+    fn feed(&mut self, from: usize) {
+        // Tokens before `i` are the open namelist's body, or the stray tokens so far.
+        let mut i = from;
+        while let Some(t) = self.body.get(i) {
+            match (&self.open, &t.tok) {
+                (Some(_), Tok::Close) => {
+                    let open = self.open.take().expect("open");
+                    self.close(open, i);
+                    self.body.drain(..1);
+                    i = 0;
+                }
+                (Some(_), Tok::Open(name)) if schema::table(name).is_some() => {
+                    let open = self.open.take().expect("open");
+                    let swallowed = vec![format!("${name} (line {})", t.line)];
+                    let where_to_close = format!("before ${name}");
+                    self.unterminated(open, i, swallowed, &where_to_close);
+                    self.start_at_body();
+                    i = 0;
+                }
+                (None, Tok::Open(_)) => {
+                    self.stray(i);
+                    self.start_at_body();
+                    i = 0;
+                }
+                // `$$`: a doubled terminator; harmless.
+                (None, Tok::Close) if i == 0 => {
+                    self.body.drain(..1);
+                }
+                _ => i += 1,
             }
         }
-        self.stray(stray);
+        if self.open.is_none() {
+            self.stray(self.body.len());
+        }
     }
 
-    /// Tokens after a closing `$` on the same card. Assignments there are lost in the original
-    /// too, so they are an error; other text a warning.
-    fn stray(&mut self, toks: Vec<Token<'_>>) {
+    /// Opens the namelist of the `$NAME` token first in [`Reader::body`], taking the token.
+    fn start_at_body(&mut self) {
+        let t = self.body.remove(0);
+        let Tok::Open(name) = t.tok else {
+            unreachable!("the caller found `$NAME` here");
+        };
+        self.start(name, t.line, t.column);
+    }
+
+    /// The first `len` tokens of [`Reader::body`], which came after a closing `$` on the same
+    /// card, taken and reported. Assignments there are lost in the original too, so they are an
+    /// error; other text a warning.
+    fn stray(&mut self, len: usize) {
+        let toks = &self.body[..len];
         let Some(first) = toks.first() else { return };
         let text: Vec<String> = toks.iter().take(8).map(|t| t.tok.text()).collect();
         let found = excerpt(&text.join(" "));
         let at = (first.line, first.column);
-        match has_assignment(&toks) {
+        let assigned = has_assignment(toks).map(str::to_string);
+        self.body.drain(..len);
+        match assigned {
             Some(var) => {
-                let var = var.to_string();
                 self.diag(
                     Severity::Error,
                     at,
@@ -628,7 +791,6 @@ impl<'a> Reader<'a> {
                 hint,
             );
         }
-        self.body.clear();
         self.open = Some(Open {
             name,
             table,
@@ -641,7 +803,10 @@ impl<'a> Reader<'a> {
         let trimmed = text.trim();
         let col = column_of(text, text.len() - text.trim_start().len());
         if trimmed.starts_with(['$', '&']) {
-            let mut toks = self.lex(text, n);
+            // With no namelist open, every token read before has been sorted.
+            debug_assert!(self.body.is_empty());
+            lexer::lex_line(text, n, 1, &mut self.body);
+            let toks = &self.body;
             // `$ NAME`: a blank between `$` and a namelist's name.
             if let (Some(Tok::Close), Some(Tok::Name(name))) =
                 (toks.first().map(|t| &t.tok), toks.get(1).map(|t| &t.tok))
@@ -661,26 +826,26 @@ impl<'a> Reader<'a> {
                         Some(format!("write ${name}; read here as ${name}")),
                     );
                     self.start(name, at.0, at.1);
-                    self.feed(toks.drain(2..));
-                    self.line_tokens = toks;
+                    self.body.drain(..2);
+                    self.feed(0);
                     return;
                 }
             }
             match toks.first().map(|t| &t.tok) {
-                Some(Tok::Open(_)) => {
-                    self.feed(toks.drain(..));
-                    self.line_tokens = toks;
+                Some(Tok::Open(_)) => self.feed(0),
+                _ => {
+                    self.body.clear();
+                    self.diag(
+                        Severity::Warning,
+                        (n, col),
+                        None,
+                        None,
+                        DeckProblem::TrailingText {
+                            found: excerpt(trimmed),
+                        },
+                        Some("a `$` outside a namelist closes nothing".into()),
+                    );
                 }
-                _ => self.diag(
-                    Severity::Warning,
-                    (n, col),
-                    None,
-                    None,
-                    DeckProblem::TrailingText {
-                        found: excerpt(trimmed),
-                    },
-                    Some("a `$` outside a namelist closes nothing".into()),
-                ),
             }
             return;
         }
@@ -849,8 +1014,15 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// Reports a namelist never closed by `$`, then reads what it holds.
-    fn unterminated(&mut self, open: Open<'a>, swallowed: Vec<String>, where_to_close: &str) {
+    /// Reports a namelist never closed by `$`, then reads what it holds: the first `len` tokens
+    /// of [`Reader::body`].
+    fn unterminated(
+        &mut self,
+        open: Open<'a>,
+        len: usize,
+        swallowed: Vec<String>,
+        where_to_close: &str,
+    ) {
         self.diag(
             Severity::Error,
             (open.line, open.column),
@@ -863,11 +1035,20 @@ impl<'a> Reader<'a> {
             },
             Some(format!("end ${} with `$` {where_to_close}", open.name)),
         );
-        self.close(open);
+        self.close(open, len);
     }
 
-    /// Applies a closed namelist's assignments to the current case.
-    fn close(&mut self, open: Open<'a>) {
+    /// Applies a closed namelist's assignments, its body the first `len` tokens of
+    /// [`Reader::body`], to the current case; the tokens are taken.
+    fn close(&mut self, open: Open<'a>, len: usize) {
+        // Out of the reader while the assignments are applied to it.
+        let mut body = std::mem::take(&mut self.body);
+        self.apply(open, &body[..len]);
+        body.drain(..len);
+        self.body = body;
+    }
+
+    fn apply(&mut self, open: Open<'a>, body: &[Token<'a>]) {
         if open.name == "EXPR00" {
             return;
         }
@@ -876,7 +1057,8 @@ impl<'a> Reader<'a> {
         };
         let name: &str = &open.name;
         let nl_key = schema::key(name).expect("known namelists have short names");
-        if self.seen.contains(&nl_key) {
+        let i = self.records.entry(&open, nl_key, table);
+        if self.records.namelists[i].seen {
             self.diags.push(
                 Severity::Note,
                 (open.line, open.column),
@@ -888,7 +1070,7 @@ impl<'a> Reader<'a> {
                 None,
             );
         } else {
-            self.seen.push(nl_key);
+            self.records.namelists[i].seen = true;
         }
         // Symmetric and asymmetric flap data share storage in the original: reading one
         // clears the other.
@@ -897,8 +1079,16 @@ impl<'a> Reader<'a> {
             "ASYFLP" => Some("SYMFLP"),
             _ => None,
         };
-        if let Some(rival) = rival {
-            if self.case.namelists.remove(rival).is_some() {
+        let rival_record = rival.and_then(schema::key).and_then(|k| {
+            let records = &self.records.namelists;
+            records.binary_search_by_key(&k, |r| r.key).ok()
+        });
+        if let (Some(rival), Some(r)) = (rival, rival_record) {
+            let record = &mut self.records.namelists[r];
+            if std::mem::take(&mut record.present) {
+                for v in &mut self.records.vars[record.var_range()] {
+                    v.value = None;
+                }
                 self.diags.push(
                     Severity::Warning,
                     (open.line, open.column),
@@ -913,12 +1103,9 @@ impl<'a> Reader<'a> {
                 );
             }
         }
-        if !self.case.namelists.contains_key(name) {
-            self.case
-                .namelists
-                .insert(name.to_string(), NamelistValues::new());
-        }
-        let values = self.case.namelists.get_mut(name).expect("inserted above");
+        let record = &mut self.records.namelists[i];
+        record.present = true;
+        let vars = &mut self.records.vars[record.var_range()];
         // Assignments are applied as they are read; what they find wrong is reported after the
         // body's syntax problems.
         let mut found = Diags {
@@ -927,14 +1114,11 @@ impl<'a> Reader<'a> {
         };
         let mut target = Target {
             name,
-            key: nl_key,
             table,
-            values,
-            origins: &mut self.case.origins,
-            assigned: &mut self.assigned,
+            vars,
             diags: &mut found,
         };
-        let problems = namelist::parse_body(&self.body, |a| target.assign(a));
+        let problems = namelist::parse_body(body, &mut self.values, |a| target.assign(a));
         for p in problems {
             self.diags.push(
                 Severity::Error,
@@ -946,7 +1130,6 @@ impl<'a> Reader<'a> {
             );
         }
         self.diags.list.append(&mut found.list);
-        self.body.clear();
     }
 
     /// Checks count variables against the arrays they count (NALPHA against ALSCHD, ...), in
@@ -968,16 +1151,16 @@ impl<'a> Reader<'a> {
                 )
             };
         let mut found = Vec::new();
-        let nmach = self.case.scalar("FLTCON", "NMACH");
-        for (nl, values) in &self.case.namelists {
-            let Some(table) = schema::table(nl) else {
-                continue;
-            };
-            let nl_key = schema::key(nl).expect("known namelists have short names");
+        let nmach = schema::key("FLTCON")
+            .and_then(|k| self.records.find(k))
+            .and_then(|r| self.records.value(r, "NMACH"))
+            .and_then(Value::scalar);
+        for record in self.records.namelists.iter().filter(|r| r.present) {
+            let nl = &record.name;
             if let (Some(nn), Some(nmach)) = (nl.strip_prefix("EXPR"), nmach) {
                 if nn.parse::<f64>().is_ok_and(|k| k > nmach) {
                     found.push((
-                        nl.clone(),
+                        nl.to_string(),
                         None,
                         Severity::Warning,
                         DeckProblem::Case {
@@ -989,8 +1172,10 @@ impl<'a> Reader<'a> {
                     ));
                 }
             }
-            for (name, value) in values {
-                let Some(var) = table.var(name) else { continue };
+            let vars = self.records.vars(record);
+            for (v, (_, var)) in vars.iter().zip(record.table.vars()) {
+                let Some(value) = &v.value else { continue };
+                let name = &var.name;
                 let Some(count_var) = &var.count else {
                     continue;
                 };
@@ -1000,13 +1185,17 @@ impl<'a> Reader<'a> {
                 if count_var.contains('(') {
                     continue;
                 }
-                let Some(count) = values.get(count_var).and_then(Value::scalar) else {
+                let Some(count) = self
+                    .records
+                    .value(record, count_var)
+                    .and_then(Value::scalar)
+                else {
                     continue;
                 };
                 let given = value.leading_count();
                 if count.fract() != 0.0 || count < 0.0 || count > var.len as f64 {
                     found.push((
-                        nl.clone(),
+                        nl.to_string(),
                         Some(count_var.clone()),
                         Severity::Error,
                         DeckProblem::WrongKind {
@@ -1026,14 +1215,8 @@ impl<'a> Reader<'a> {
                     };
                     found.push(mismatch(nl, name, count_var, count, given, hint));
                 } else if (given as f64) > count
-                    && schema::key(&var.name)
-                        .and_then(|v| {
-                            let k = (nl_key, v);
-                            let i = self.assigned.binary_search_by_key(&k, |(ak, _)| *ak);
-                            i.ok().map(|i| self.assigned[i].1)
-                        })
-                        // Elements after the first `count` (a whole number up to the length).
-                        .is_some_and(|set| set >> (count as u32 + 1) != 0)
+                    // Elements after the first `count` (a whole number up to the length).
+                    && v.assigned >> (count as u32 + 1) != 0
                 {
                     // Values beyond the count written in this case (saved data may hold more
                     // values than a later case asks for on purpose).
@@ -1047,7 +1230,10 @@ impl<'a> Reader<'a> {
         for (nl, var, severity, problem, hint) in found {
             let at = var
                 .as_ref()
-                .and_then(|v| self.case.origins.get(&nl, v))
+                .and_then(|v| {
+                    let record = self.records.find(schema::key(&nl)?)?;
+                    self.records.var(record, v)?.origin
+                })
                 .unwrap_or((self.case.first_line, 0));
             self.diag(severity, at, Some(&nl), var.as_deref(), problem, hint);
         }
@@ -1073,40 +1259,42 @@ impl<'a> Reader<'a> {
             if !at_end {
                 self.case = next;
                 self.carried = None;
-                self.assigned.clear();
-                self.seen.clear();
+                self.records.clear();
                 self.seen_naca.clear();
             }
             return;
         }
         self.check_counts();
+        let (namelists, origins) = self.records.materialize(!self.case.save);
+        self.case.namelists = namelists;
+        self.case.origins = origins;
         if self.case.save {
-            next.namelists = self.case.namelists.clone();
             next.airfoils = self.case.airfoils.clone();
-            next.origins = self.case.origins.clone();
             self.carried = Some(self.case.cards.dim.unwrap_or_default());
+            for r in &mut self.records.namelists {
+                r.seen = false;
+            }
+            for v in &mut self.records.vars {
+                v.assigned = 0;
+            }
         } else {
             self.carried = None;
+            self.records.clear();
         }
         let mut done = std::mem::replace(&mut self.case, next);
         done.number = self.cases.len() + 1;
         self.cases.push(done);
-        self.assigned.clear();
-        self.seen.clear();
         self.seen_naca.clear();
     }
 }
 
-/// A namelist of the current case that assignments are applied to, with the reader's records
-/// that assignments update.
+/// A namelist of the current case that assignments are applied to.
 struct Target<'r, 'd> {
-    /// The namelist's name (upper case) and its [`schema::key`].
+    /// The namelist's name (upper case).
     name: &'r str,
-    key: u64,
     table: &'static Table,
-    values: &'r mut NamelistValues,
-    origins: &'r mut Origins,
-    assigned: &'r mut Assigned,
+    /// The records of the namelist's variables, by their place in the table.
+    vars: &'r mut [VarRecord],
     diags: &'r mut Diags<'d>,
 }
 
@@ -1117,7 +1305,7 @@ impl Target<'_, '_> {
         let at = (a.line, a.column);
         let written: &str = &a.name;
         let canonical = schema::canonical(&self.table.spec.name, written);
-        let Some(var) = self.table.var(canonical) else {
+        let Some(index) = self.table.index(canonical) else {
             let near = schema::nearest(written, self.table.spec.vars.keys().map(String::as_str))
                 .map(|n| format!("did you mean {n}?"))
                 .or_else(|| {
@@ -1136,6 +1324,7 @@ impl Target<'_, '_> {
             );
             return;
         };
+        let var = self.table.vars()[index].1;
         let start = a.index.unwrap_or(1);
         let last = start.saturating_add(a.values.len().saturating_sub(1));
         if last > var.len {
@@ -1186,17 +1375,16 @@ impl Target<'_, '_> {
             return;
         }
         let end = last.min(var.len);
-        let var_key = schema::key(&var.name).expect("variable names are short");
-        let set = sorted_entry(self.assigned, (self.key, var_key));
+        let record = &mut self.vars[index];
         // Recorded up to the first element assigned before, as a search that stops there.
         let mut reassigned = false;
         for i in start..=end {
             let bit = 1u128 << i;
-            if *set & bit != 0 {
+            if record.assigned & bit != 0 {
                 reassigned = true;
                 break;
             }
-            *set |= bit;
+            record.assigned |= bit;
         }
         if reassigned {
             self.diags.push(
@@ -1210,16 +1398,11 @@ impl Target<'_, '_> {
                 None,
             );
         }
-        let entry = match self.values.get_mut(&var.name) {
-            Some(e) => e,
-            None => self
-                .values
-                .entry(var.name.clone())
-                .or_insert_with(|| match var.kind {
-                    Kind::Logical => Value::Logicals(Vec::new()),
-                    Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
-                }),
-        };
+        record.origin = Some(at);
+        let entry = record.value.get_or_insert_with(|| match var.kind {
+            Kind::Logical => Value::Logicals(Vec::new()),
+            Kind::Real | Kind::Integer => Value::Numbers(Vec::new()),
+        });
         // The elements written reach index `end` at most: room for them at once.
         match &mut *entry {
             Value::Numbers(v) => v.reserve(end.saturating_sub(v.len())),
@@ -1249,7 +1432,6 @@ impl Target<'_, '_> {
                 _ => {}
             }
         }
-        self.origins.insert_keys((self.key, var_key), at);
     }
 }
 
@@ -1273,13 +1455,14 @@ pub fn read(text: &str, file: &str) -> RawDeck {
         },
         cases: Vec::new(),
         case: RawCase::default(),
-        assigned: Assigned::new(),
-        seen: Vec::new(),
+        records: Records::with_capacity(),
+        values: Vec::new(),
         seen_naca: Vec::new(),
         carried: None,
         open: None,
-        body: Vec::new(),
-        line_tokens: Vec::new(),
+        // Room for the tokens of most namelists (a token a value, one a comma), so that the
+        // list seldom grows.
+        body: Vec::with_capacity(BODY_TOKENS),
         lines: split_lines(text),
     };
     reader.run()

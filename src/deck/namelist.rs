@@ -113,19 +113,18 @@ impl<'s, 't> Parser<'s, 't> {
         }
     }
 
-    /// Reads every assignment, handing each to `each`; the vector of values is reused from one
-    /// assignment to the next.
-    fn parse(&mut self, each: &mut dyn FnMut(&Assignment<'t>)) {
-        let mut values = Vec::new();
+    /// Reads every assignment, handing each to `each`; the vector of values (empty) is reused
+    /// from one assignment to the next, and left empty.
+    fn parse(&mut self, values: &mut Vec<Lit>, each: &mut dyn FnMut(&Assignment<'t>)) {
         while let Some(t) = self.peek(0) {
             match &t.tok {
                 Tok::Comma => {
                     self.pos += 1;
                 }
                 Tok::Name(_) if self.starts_assignment(0) => {
-                    if let Some(a) = self.assignment(&mut values) {
+                    if let Some(a) = self.assignment(values) {
                         each(&a);
-                        values = a.values;
+                        *values = a.values;
                         values.clear();
                     }
                 }
@@ -374,9 +373,12 @@ impl<'s, 't> Parser<'s, 't> {
 }
 
 /// Parses the tokens of one namelist body (without its `$NAME` and closing `$`), handing each
-/// assignment to `each` in order as it is read; returns the problems found.
+/// assignment to `each` in order as it is read; returns the problems found. `values` is room
+/// for the values of an assignment, reused by the caller from one body to the next; it is left
+/// empty.
 pub fn parse_body<'t>(
     toks: &[Token<'t>],
+    values: &mut Vec<Lit>,
     mut each: impl FnMut(&Assignment<'t>),
 ) -> Vec<BodyProblem> {
     let mut p = Parser {
@@ -384,7 +386,8 @@ pub fn parse_body<'t>(
         pos: 0,
         problems: Vec::new(),
     };
-    p.parse(&mut each);
+    values.clear();
+    p.parse(values, &mut each);
     p.problems
 }
 
@@ -399,7 +402,7 @@ mod tests {
             lex_line(l, i + 1, 1, &mut toks);
         }
         let mut out = Vec::new();
-        let problems = parse_body(&toks, |a| out.push(a.clone()));
+        let problems = parse_body(&toks, &mut Vec::new(), |a| out.push(a.clone()));
         (out, problems)
     }
 

@@ -149,11 +149,18 @@ pub(crate) struct Table {
 impl Table {
     /// The variable called `name` (upper case), as [`NamelistSpec::var`].
     pub fn var(&self, name: &str) -> Option<&'static VarSpec> {
+        self.index(name).map(|i| self.vars[i].1)
+    }
+
+    /// The place of the variable called `name` (upper case) in [`Table::vars`].
+    pub fn index(&self, name: &str) -> Option<usize> {
         let k = key(name)?;
-        self.vars
-            .binary_search_by_key(&k, |(vk, _)| *vk)
-            .ok()
-            .map(|i| self.vars[i].1)
+        self.vars.binary_search_by_key(&k, |(vk, _)| *vk).ok()
+    }
+
+    /// The variables with their [`key`]s, in the order of their names.
+    pub fn vars(&self) -> &[(u64, &'static VarSpec)] {
+        &self.vars
     }
 }
 
