@@ -210,18 +210,15 @@ impl Numeral<'_> {
     /// decimals: nearly all take this path.
     fn exact_value(&self) -> Option<f64> {
         let fraction = self.fraction.unwrap_or_default();
-        let mut digits = 0u64;
-        let mut significant = 0;
-        for &d in self.whole.iter().chain(fraction) {
-            if digits == 0 && d == b'0' {
-                continue;
-            }
-            significant += 1;
-            if significant > 16 {
-                return None;
-            }
-            digits = digits * 10 + u64::from(d - b'0');
+        // Up to 19 digits fit in a u64 (longer numerals are left to `str::parse`).
+        if self.whole.len() + fraction.len() > 19 {
+            return None;
         }
+        let digits = self
+            .whole
+            .iter()
+            .chain(fraction)
+            .fold(0u64, |n, d| n * 10 + u64::from(d - b'0'));
         if digits > 1 << 53 {
             return None;
         }

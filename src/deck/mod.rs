@@ -106,28 +106,14 @@ impl Origins {
     /// Records that variable `var` of namelist `nl` was assigned at `at` (line, column). Names
     /// longer than eight characters, which no namelist or variable has, are not recorded.
     pub fn insert(&mut self, nl: &str, var: &str, at: (usize, usize)) {
-        if let (Some(n), Some(v)) = (schema::key(nl), schema::key(var)) {
-            self.insert_keys((n, v), at);
+        let (Some(n), Some(v)) = (schema::key(nl), schema::key(var)) else {
+            return;
+        };
+        match self.places.binary_search_by_key(&(n, v), |(k, _)| *k) {
+            Ok(i) => self.places[i].1 = at,
+            Err(i) => self.places.insert(i, ((n, v), at)),
         }
     }
-
-    /// As [`Origins::insert`], by the [`schema::key`]s of the names.
-    fn insert_keys(&mut self, keys: (u64, u64), at: (usize, usize)) {
-        *sorted_entry(&mut self.places, keys) = at;
-    }
-}
-
-/// The value of `key` in `list` (sorted by key), inserted as the default if missing. A sorted
-/// vector: the reader's records hold tens of entries, mostly added in order.
-fn sorted_entry<K: Ord + Copy, V: Default>(list: &mut Vec<(K, V)>, key: K) -> &mut V {
-    let i = match list.binary_search_by_key(&key, |(k, _)| *k) {
-        Ok(i) => i,
-        Err(i) => {
-            list.insert(i, (key, V::default()));
-            i
-        }
-    };
-    &mut list[i].1
 }
 
 impl RawCase {
@@ -697,16 +683,20 @@ impl<'a> Reader<'a> {
                     i = 0;
                 }
                 (Some(_), Tok::Open(name)) if schema::table(name).is_some() => {
+                    let (name, line, column) = (name.clone(), t.line, t.column);
                     let open = self.open.take().expect("open");
-                    let swallowed = vec![format!("${name} (line {})", t.line)];
+                    let swallowed = vec![format!("${name} (line {line})")];
                     let where_to_close = format!("before ${name}");
                     self.unterminated(open, i, swallowed, &where_to_close);
-                    self.start_at_body();
+                    self.body.drain(..1);
+                    self.start(name, line, column);
                     i = 0;
                 }
-                (None, Tok::Open(_)) => {
+                (None, Tok::Open(name)) => {
+                    let (name, line, column) = (name.clone(), t.line, t.column);
                     self.stray(i);
-                    self.start_at_body();
+                    self.body.drain(..1);
+                    self.start(name, line, column);
                     i = 0;
                 }
                 // `$$`: a doubled terminator; harmless.
@@ -719,15 +709,6 @@ impl<'a> Reader<'a> {
         if self.open.is_none() {
             self.stray(self.body.len());
         }
-    }
-
-    /// Opens the namelist of the `$NAME` token first in [`Reader::body`], taking the token.
-    fn start_at_body(&mut self) {
-        let t = self.body.remove(0);
-        let Tok::Open(name) = t.tok else {
-            unreachable!("the caller found `$NAME` here");
-        };
-        self.start(name, t.line, t.column);
     }
 
     /// The first `len` tokens of [`Reader::body`], which came after a closing `$` on the same

@@ -102,7 +102,7 @@ impl<'s, 't> Parser<'s, 't> {
     /// Skips to the start of the next assignment (after a comma) or the end.
     fn recover(&mut self) {
         while let Some(t) = self.peek(0) {
-            if t.tok == Tok::Comma && self.starts_assignment(1) {
+            if matches!(t.tok, Tok::Comma) && self.starts_assignment(1) {
                 self.pos += 1;
                 return;
             }
@@ -154,7 +154,7 @@ impl<'s, 't> Parser<'s, 't> {
         };
         self.pos += 1;
         let mut index = None;
-        if self.peek(0).map(|t| &t.tok) == Some(&Tok::LParen) {
+        if matches!(self.peek(0).map(|t| &t.tok), Some(Tok::LParen)) {
             self.pos += 1;
             match (self.peek(0).map(|t| &t.tok), self.peek(1).map(|t| &t.tok)) {
                 (
@@ -190,7 +190,7 @@ impl<'s, 't> Parser<'s, 't> {
             }
         }
         match self.peek(0) {
-            Some(t) if t.tok == Tok::Equals => self.pos += 1,
+            Some(t) if matches!(t.tok, Tok::Equals) => self.pos += 1,
             other => {
                 let at = other.unwrap_or(head);
                 self.expected_here(at, Some(name), format!("`=` after {name}"));
