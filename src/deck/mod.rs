@@ -462,6 +462,20 @@ impl<'a> Reader<'a> {
         );
     }
 
+    /// Text the reader ignores on line `line`: a warning with its excerpt.
+    fn trailing_text(&mut self, line: usize, column: usize, found: &str, hint: &str) {
+        self.diag(
+            Severity::Warning,
+            (line, column),
+            None,
+            None,
+            DeckProblem::TrailingText {
+                found: excerpt(found),
+            },
+            Some(hint.into()),
+        );
+    }
+
     /// A control card whose output of the original this program does not produce: a warning,
     /// so that the missing pages are not a surprise.
     fn output_not_reproduced(&mut self, line: usize, column: usize, card: &str, what: &str) {
@@ -816,16 +830,7 @@ impl<'a> Reader<'a> {
                 Some(Tok::Open(_)) => self.feed(0),
                 _ => {
                     self.body.clear();
-                    self.diag(
-                        Severity::Warning,
-                        (n, col),
-                        None,
-                        None,
-                        DeckProblem::TrailingText {
-                            found: excerpt(trimmed),
-                        },
-                        Some("a `$` outside a namelist closes nothing".into()),
-                    );
+                    self.trailing_text(n, col, trimmed, "a `$` outside a namelist closes nothing");
                 }
             }
             return;
@@ -840,15 +845,11 @@ impl<'a> Reader<'a> {
                     );
                 }
                 if let Some(extra) = &parsed.extra {
-                    self.diag(
-                        Severity::Warning,
-                        (n, col),
-                        None,
-                        None,
-                        DeckProblem::TrailingText {
-                            found: excerpt(extra),
-                        },
-                        Some("the card needs nothing more; the rest is ignored".into()),
+                    self.trailing_text(
+                        n,
+                        col,
+                        extra,
+                        "the card needs nothing more; the rest is ignored",
                     );
                 }
                 self.card(n, col, parsed.card);

@@ -158,22 +158,16 @@ pub fn wing_zero_lift_angle_read(
         planform.aspect_ratio,
         planform.quarter_chord.deg,
     );
+    // The original's CALCA0 leaves a twist below ORIGINAL_MIN_TWIST_DEG out.
+    let twist_deg =
+        if reading == ZeroLiftReading::Original && twist_deg.abs() < ORIGINAL_MIN_TWIST_DEG {
+            0.0
+        } else {
+            twist_deg
+        };
     let per_twist = if twist_deg == 0.0 {
         None
     } else if reading == ZeroLiftReading::Original {
-        // The original's CALCA0 leaves a twist below ORIGINAL_MIN_TWIST_DEG out.
-        if twist_deg.abs() < ORIGINAL_MIN_TWIST_DEG {
-            return wing_zero_lift_angle_read(
-                planform,
-                section_deg,
-                0.0,
-                cambered,
-                thickness_ratio,
-                mach,
-                reading,
-                warnings,
-            );
-        }
         Some(twist_term_as_the_original(
             taper,
             aspect_ratio,
