@@ -20,6 +20,7 @@
 //! ```
 
 pub mod atmosphere;
+pub mod auxiliary;
 pub mod case;
 pub mod charts;
 pub mod conditions;

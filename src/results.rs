@@ -163,6 +163,9 @@ pub struct ConditionResults {
     /// EPSLON D(EPSLON)/D(ALPHA) table under the page), on the configurations with a
     /// horizontal tail behind the wing.
     pub downwash: Option<DownwashTable>,
+    /// With the PART card, on the case's own configuration: the original's CONFIGURATION
+    /// AUXILIARY AND PARTIAL OUTPUT (see [`crate::auxiliary`]).
+    pub auxiliary: Option<crate::auxiliary::AuxiliaryOutput>,
 }
 
 /// The downwash at the horizontal tail at each angle of attack of the page (DATCOM 4.4.1):
@@ -1059,6 +1062,7 @@ fn compute_case(case: &Case) -> CaseResults {
                     // static page.
                     dynamic: None,
                     downwash: None,
+                    auxiliary: None,
                 };
                 // The pages with a horizontal tail behind the wing carry its downwash.
                 if !matches!(
@@ -1098,6 +1102,14 @@ fn compute_case(case: &Case) -> CaseResults {
                 }
                 if own {
                     own_computed = true;
+                    if case.cards.part {
+                        entry.auxiliary = Some(crate::auxiliary::auxiliary_output(
+                            case,
+                            index,
+                            &f.alpha_deg,
+                            wing_section,
+                        ));
+                    }
                 }
                 conditions.push(entry);
             }
@@ -1109,6 +1121,7 @@ fn compute_case(case: &Case) -> CaseResults {
                     static_coefficients: StaticCoefficients::empty(n),
                     dynamic: case.cards.damp.then(|| DynamicDerivatives::empty(n)),
                     downwash: None,
+                    auxiliary: None,
                 });
             }
         }

@@ -928,7 +928,7 @@ impl<'a> Reader<'a> {
                     n,
                     col,
                     "PART",
-                    "the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT pages are not printed (the methods' terms are in the library's results)",
+                    "of the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT only the basic body and planform properties and the wing-body interference line are printed (not the tail-body line, sidewash, body-vortex table, dynamic-derivative incrementals or transonic data fairing)",
                 );
             }
             Card::Trim => {

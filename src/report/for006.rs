@@ -150,6 +150,21 @@ pub(crate) fn dynamic_page(out: &mut String, case: &CaseResults, c: &ConditionRe
     }
 }
 
+/// With PART, the CONFIGURATION AUXILIARY AND PARTIAL OUTPUT pages of a condition: the basic
+/// properties, then (with a wing and a body) the interference line.
+fn auxiliary_pages(out: &mut String, case: &CaseResults, c: &ConditionResults) {
+    let Some(a) = &c.auxiliary else { return };
+    let view = super::auxiliary::view(a, case);
+    let (_, _, _, xcg, zcg) = super::reference_view(case);
+    const KIND: &str = "CONFIGURATION AUXILIARY AND PARTIAL OUTPUT";
+    header(out, KIND, case, c);
+    super::auxiliary::basic_properties(out, &view, xcg, zcg);
+    if view.wing_body.is_some() {
+        header(out, KIND, case, c);
+        super::auxiliary::interference(out, &view);
+    }
+}
+
 /// The whole listing: for each case, the input-card marker the original opens a case with,
 /// then per condition the static page and, with DAMP, the dynamic page.
 pub fn to_string(results: &Results) -> String {
@@ -165,6 +180,7 @@ pub fn to_string(results: &Results) -> String {
             static_page(&mut out, case, c);
             downwash_table(&mut out, c);
             dynamic_page(&mut out, case, c);
+            auxiliary_pages(&mut out, case, c);
         }
     }
     out

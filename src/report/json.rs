@@ -76,6 +76,10 @@ pub struct ConditionJson {
     /// pages without one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub downwash: Option<DownwashJson>,
+    /// With the PART card, on the case's own configuration: the original's CONFIGURATION
+    /// AUXILIARY AND PARTIAL OUTPUT (docs/output.md); absent otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub auxiliary: Option<super::auxiliary::AuxiliaryJson>,
 }
 
 /// The ALPHA Q/QINF EPSLON D(EPSLON)/D(ALPHA) table.
@@ -226,6 +230,10 @@ fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
             epsilon: w.epsilon_deg.clone(),
             gradient: w.gradient.clone(),
         }),
+        auxiliary: c
+            .auxiliary
+            .as_ref()
+            .map(|a| super::auxiliary::view(a, case)),
     }
 }
 
@@ -380,6 +388,7 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                                     epsilon: listed_column(&k.downwash, "EPSLON"),
                                     gradient: listed_column(&k.downwash, "D(EPSLON)/D(ALPHA)"),
                                 }),
+                                auxiliary: None,
                             }
                         })
                         .collect(),

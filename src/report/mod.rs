@@ -4,6 +4,7 @@
 //! This is the output edge: SI and per-radian values inside become the deck's units (DIM) and
 //! per degree unless DERIV RAD here, and nowhere else.
 
+pub mod auxiliary;
 pub mod compare;
 pub mod csv;
 pub mod for006;

@@ -160,6 +160,13 @@ pub fn to_string(results: &Results) -> String {
             super::for006::downwash_table(&mut s, c);
             s.push('\n');
             super::for006::dynamic_page(&mut s, case, c);
+            if let Some(a) = &c.auxiliary {
+                let view = super::auxiliary::view(a, case);
+                let (_, _, _, xcg, zcg) = super::reference_view(case);
+                let _ = writeln!(s, "\n{:^120}", "AUXILIARY AND PARTIAL OUTPUT (PART)");
+                super::auxiliary::basic_properties(&mut s, &view, xcg, zcg);
+                super::auxiliary::interference(&mut s, &view);
+            }
         }
         for w in &case.warnings {
             let _ = writeln!(s, " warning (case {}): {w}", case.number);

@@ -1,0 +1,253 @@
+//! The PART card's output: the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT pages,
+//! the intermediate quantities of the build-up a designer checks a hand calculation against.
+//!
+//! Produced for the case's own configuration at each flight condition (with BUILD the
+//! component pages have none, as in the original):
+//! - BASIC BODY PROPERTIES: wetted and base areas and the body's zero-lift drag with its base
+//!   and friction parts (DATCOM 2.3, 4.2.3.1);
+//! - the moment reference centre behind the leading edge of the wing's theoretical MAC;
+//! - BASIC PLANFORM PROPERTIES of each surface, theoretical and exposed (DATCOM 2.2.2), with
+//!   the exposed panel's zero-lift drag and skin-friction coefficient (DATCOM 4.1.5.1);
+//! - the wing-body interference line CLA-B(W), CLA-W(B), K-B(W), K-W(B), XAC/C-B(W)
+//!   (DATCOM 4.3.1.2, 4.3.2.2).
+//!
+//! Not produced yet (docs/output.md): the tail-body line, the sidewash, the body-vortex table,
+//! the dynamic-derivative incrementals and the transonic data-fairing tables.
+//!
+//! Values are SI (m, m²) and per radian, as everywhere inside the library; reports convert.
+
+use serde::Serialize;
+
+use crate::case::{Case, Planform};
+use crate::deck::cards::Surface;
+use crate::geometry::{planform, Span};
+use crate::methods::section::SectionCharacteristics;
+
+/// The auxiliary output of one flight condition.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AuxiliaryOutput {
+    /// Present with a body.
+    pub body: Option<BodyProperties>,
+    /// x of the moment reference centre behind the leading edge of the wing's theoretical MAC,
+    /// m; present with a wing.
+    pub xcg_behind_mac_leading_edge: Option<f64>,
+    /// Wing, horizontal tail, vertical tail, ventral fin: those the case has.
+    pub planforms: Vec<PlanformProperties>,
+    /// The wing-body interference line; present with a wing and a body at subsonic speed
+    /// (absent where the wing-body method fails: its error is among the page's warnings).
+    pub wing_body: Option<crate::methods::wing_body::Auxiliary>,
+}
+
+/// The body's areas and zero-lift drag (drag on the reference area).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BodyProperties {
+    /// m².
+    pub wetted_area: f64,
+    /// m².
+    pub base_area: f64,
+    /// Friction plus base; none where the method is not applicable (the original's NDM).
+    pub zero_lift_drag: Option<f64>,
+    pub base_drag: Option<f64>,
+    /// Skin friction with the form factor.
+    pub friction_drag: Option<f64>,
+    /// None at subsonic speeds: the form factor carries it (the original's NA).
+    pub pressure_drag: Option<f64>,
+}
+
+/// One surface's planform properties.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PlanformProperties {
+    pub surface: Surface,
+    pub theoretical: PlanformRow,
+    pub exposed: PlanformRow,
+    /// The exposed surface's zero-lift drag on the reference area; none where it is not
+    /// computed (no thickness ratio, or not subsonic).
+    pub zero_lift_drag: Option<f64>,
+    /// Turbulent flat-plate skin-friction coefficient at the exposed MAC's Reynolds number.
+    pub friction_coefficient: Option<f64>,
+}
+
+/// A planform's row of the BASIC PLANFORM PROPERTIES block.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PlanformRow {
+    /// m² (horizontal surfaces: both halves; vertical ones: the one panel).
+    pub area: f64,
+    pub taper_ratio: f64,
+    pub aspect_ratio: f64,
+    pub quarter_chord_sweep_deg: f64,
+    /// Mean aerodynamic chord, m.
+    pub mac: f64,
+    /// x of the MAC's quarter chord from the body nose, m.
+    pub x_mac_quarter_chord: f64,
+    /// Spanwise station of the MAC from the centreline, m. Vertical surfaces: the theoretical
+    /// row's height includes ZV (above the body axis), the exposed row's is from the
+    /// theoretical root, as the original prints them.
+    pub y_mac: f64,
+}
+
+/// The auxiliary output of flight condition `index` of `case` at the angles `alpha_deg`.
+/// Parts whose method fails are left out: the component pages' warnings say why.
+pub fn auxiliary_output(
+    case: &Case,
+    index: usize,
+    alpha_deg: &[f64],
+    wing_section: Option<&SectionCharacteristics>,
+) -> AuxiliaryOutput {
+    let body = case.body.as_ref().and_then(|b| {
+        let g = crate::geometry::body(b).ok()?;
+        let drag = case.conditions.get(index).and_then(|c| {
+            crate::methods::body::body_alone(case, &g, c, alpha_deg)
+                .ok()
+                .and_then(|b| b.zero_lift_drag)
+        });
+        Some(BodyProperties {
+            wetted_area: g.wetted_area,
+            base_area: g.base_area,
+            zero_lift_drag: drag.as_ref().map(|d| d.total),
+            base_drag: drag.as_ref().map(|d| d.base),
+            friction_drag: drag.as_ref().map(|d| d.friction),
+            pressure_drag: drag.as_ref().and_then(|d| d.pressure),
+        })
+    });
+    let planforms: Vec<PlanformProperties> = [
+        Surface::Wing,
+        Surface::HorizontalTail,
+        Surface::VerticalTail,
+        Surface::VentralFin,
+    ]
+    .into_iter()
+    .filter_map(|s| planform_properties(case, index, alpha_deg, wing_section, s))
+    .collect();
+    let xcg_behind_mac_leading_edge =
+        planforms
+            .iter()
+            .find(|p| p.surface == Surface::Wing)
+            .map(|w| {
+                let xcg = case.synthesis.as_ref().and_then(|s| s.xcg).unwrap_or(0.0);
+                xcg - (w.theoretical.x_mac_quarter_chord - w.theoretical.mac / 4.0)
+            });
+    let wing_body = (case.wing.is_some() && case.body.is_some())
+        .then(|| {
+            crate::methods::wing_body::wing_body_with_section(case, index, alpha_deg, wing_section)
+        })
+        .and_then(|r| r.ok().map(|wb| wb.auxiliary));
+    AuxiliaryOutput {
+        body,
+        xcg_behind_mac_leading_edge,
+        planforms,
+        wing_body,
+    }
+}
+
+/// Sweep of the quarter chord over a two-panel planform: the arc cosine of the panels' cosines
+/// weighted by their areas (the original's reading for the TOTAL rows); the straight-tapered
+/// planform's own sweep otherwise.
+fn total_quarter_chord_sweep_deg(g: &crate::geometry::PlanformGeometry, type1: bool) -> f64 {
+    let Some(outboard) = g.outboard.filter(|_| !type1) else {
+        return g.sweep_deg(0.25);
+    };
+    let cos_in = g.tan_sweep_inboard(0.25).atan().cos();
+    let cos_out = g.tan_sweep_outboard(0.25).atan().cos();
+    let a_in = g.inboard_theoretical.area;
+    let weighted = (a_in * cos_in + outboard.area * cos_out) / (a_in + outboard.area);
+    weighted.clamp(-1.0, 1.0).acos().to_degrees()
+}
+
+fn planform_properties(
+    case: &Case,
+    index: usize,
+    alpha_deg: &[f64],
+    wing_section: Option<&SectionCharacteristics>,
+    surface: Surface,
+) -> Option<PlanformProperties> {
+    let syn = case.synthesis.as_ref();
+    let (p, span, x0, z0): (&Planform, Span, Option<f64>, Option<f64>) = match surface {
+        Surface::Wing => (
+            case.wing.as_ref()?,
+            Span::Both,
+            syn.and_then(|s| s.xw),
+            None,
+        ),
+        Surface::HorizontalTail => (
+            case.horizontal_tail.as_ref()?,
+            Span::Both,
+            syn.and_then(|s| s.xh),
+            None,
+        ),
+        Surface::VerticalTail => (
+            case.vertical_tail.as_ref()?,
+            Span::Single,
+            syn.and_then(|s| s.xv),
+            syn.and_then(|s| s.zv),
+        ),
+        Surface::VentralFin => (
+            case.ventral_fin.as_ref()?,
+            Span::Single,
+            syn.and_then(|s| s.xvf),
+            syn.and_then(|s| s.zvf),
+        ),
+    };
+    let g = planform(p, span).ok()?;
+    let (x0, z0) = (x0.unwrap_or(0.0), z0.unwrap_or(0.0));
+    let type1 = p.planform_type.is_none_or(|t| (t + 0.5).floor() == 1.0);
+    let theoretical = PlanformRow {
+        area: g.theoretical.area,
+        taper_ratio: g.theoretical.taper,
+        aspect_ratio: g.theoretical.aspect_ratio,
+        quarter_chord_sweep_deg: total_quarter_chord_sweep_deg(&g, type1),
+        mac: g.theoretical.mac,
+        x_mac_quarter_chord: x0 + g.x_mac_le + g.theoretical.mac / 4.0,
+        y_mac: g.theoretical.y_mac + z0,
+    };
+    let exposed = PlanformRow {
+        area: g.exposed.area,
+        taper_ratio: g.exposed.taper,
+        aspect_ratio: g.exposed.aspect_ratio,
+        quarter_chord_sweep_deg: g.sweep_deg(0.25),
+        mac: g.exposed.mac,
+        x_mac_quarter_chord: x0 + g.x_exposed_mac_quarter,
+        // From the centreline, or for a vertical surface from its theoretical root (the
+        // original leaves ZV out of the exposed row, as it prints it).
+        y_mac: g.exposed.y_mac + g.semispan - g.exposed_semispan,
+    };
+    let drag = surface_zero_lift_drag(case, index, alpha_deg, wing_section, surface);
+    Some(PlanformProperties {
+        surface,
+        theoretical,
+        exposed,
+        zero_lift_drag: drag.as_ref().map(|d| d.total),
+        friction_coefficient: drag.map(|d| d.inboard.skin_friction_coefficient),
+    })
+}
+
+/// The exposed surface's zero-lift drag from the surface's own method (DATCOM 4.1.5.1).
+fn surface_zero_lift_drag(
+    case: &Case,
+    index: usize,
+    alpha_deg: &[f64],
+    wing_section: Option<&SectionCharacteristics>,
+    surface: Surface,
+) -> Option<crate::methods::wing::WingZeroLiftDrag> {
+    match surface {
+        Surface::Wing => {
+            crate::methods::wing::wing_alone_with_section(case, index, alpha_deg, wing_section)
+                .ok()?
+                .terms
+                .zero_lift_drag
+        }
+        Surface::HorizontalTail => {
+            crate::methods::tail::horizontal_tail_alone(case, index, alpha_deg)
+                .ok()?
+                .surface
+                .terms
+                .zero_lift_drag
+        }
+        Surface::VerticalTail | Surface::VentralFin => {
+            let mut ignored = Vec::new();
+            crate::methods::tail::fin_zero_lift_drag(case, index, surface, &mut ignored)
+                .ok()
+                .flatten()
+                .map(|f| f.drag)
+        }
+    }
+}

@@ -1,0 +1,242 @@
+//! The PART card's output in the deck's units: the `auxiliary` block of the JSON and the
+//! CONFIGURATION AUXILIARY AND PARTIAL OUTPUT pages of the listing and the text report.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::text::{fortran_e, fortran_f};
+use crate::auxiliary::{AuxiliaryOutput, PlanformRow};
+use crate::case::units::from_si;
+use crate::deck::schema::Dimension;
+use crate::results::CaseResults;
+
+/// The auxiliary output in the deck's units (lengths in DIM units divided back by SCALE,
+/// the interference line's slopes per degree).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AuxiliaryJson {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub body: Option<BodyJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub xcg_behind_mac_leading_edge: Option<f64>,
+    pub planforms: Vec<PlanformJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wing_body: Option<InterferenceJson>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BodyJson {
+    pub wetted_area: f64,
+    pub base_area: f64,
+    pub zero_lift_drag: Option<f64>,
+    pub base_drag: Option<f64>,
+    pub friction_drag: Option<f64>,
+    pub pressure_drag: Option<f64>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PlanformJson {
+    pub surface: &'static str,
+    pub theoretical: RowJson,
+    pub exposed: RowJson,
+    pub zero_lift_drag: Option<f64>,
+    pub friction_coefficient: Option<f64>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RowJson {
+    pub area: f64,
+    pub taper_ratio: f64,
+    pub aspect_ratio: f64,
+    pub quarter_chord_sweep: f64,
+    pub mac: f64,
+    pub x_mac: f64,
+    pub y_mac: f64,
+}
+
+/// The interference line, named as the original prints it: lift-curve slopes per degree (as
+/// the original prints them whatever DERIV says), on the reference area.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InterferenceJson {
+    #[serde(rename = "CLA-B(W)")]
+    pub cla_body: f64,
+    #[serde(rename = "CLA-W(B)")]
+    pub cla_wing: f64,
+    #[serde(rename = "K-B(W)")]
+    pub k_body: f64,
+    #[serde(rename = "K-W(B)")]
+    pub k_wing: f64,
+    #[serde(rename = "XAC/C-B(W)")]
+    pub xac_over_c: f64,
+}
+
+/// The auxiliary output of a condition of `case` in the deck's units.
+pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
+    let s = case.scale;
+    let len = |v: f64| from_si(v, case.dim, Dimension::Length) / s;
+    let area = |v: f64| from_si(v, case.dim, Dimension::Area) / (s * s);
+    let row = |r: &PlanformRow| RowJson {
+        area: area(r.area),
+        taper_ratio: r.taper_ratio,
+        aspect_ratio: r.aspect_ratio,
+        quarter_chord_sweep: r.quarter_chord_sweep_deg,
+        mac: len(r.mac),
+        x_mac: len(r.x_mac_quarter_chord),
+        y_mac: len(r.y_mac),
+    };
+    // The original prints the interference line per degree whatever DERIV says.
+    let per = |per_rad: f64| per_rad * std::f64::consts::PI / 180.0;
+    AuxiliaryJson {
+        body: a.body.map(|b| BodyJson {
+            wetted_area: area(b.wetted_area),
+            base_area: area(b.base_area),
+            zero_lift_drag: b.zero_lift_drag,
+            base_drag: b.base_drag,
+            friction_drag: b.friction_drag,
+            pressure_drag: b.pressure_drag,
+        }),
+        xcg_behind_mac_leading_edge: a.xcg_behind_mac_leading_edge.map(len),
+        planforms: a
+            .planforms
+            .iter()
+            .map(|p| PlanformJson {
+                surface: p.surface.name(),
+                theoretical: row(&p.theoretical),
+                exposed: row(&p.exposed),
+                zero_lift_drag: p.zero_lift_drag,
+                friction_coefficient: p.friction_coefficient,
+            })
+            .collect(),
+        wing_body: a.wing_body.map(|w| InterferenceJson {
+            cla_body: per(w.body_in_presence_of_wing_slope_per_rad),
+            cla_wing: per(w.wing_in_presence_of_body_slope_per_rad),
+            k_body: w.body_in_presence_of_wing,
+            k_wing: w.wing_in_presence_of_body,
+            xac_over_c: w.carry_over_centre,
+        }),
+    }
+}
+
+/// Fortran `Ew.d` without a scale factor: `0.2817E+03`, right-aligned in `w`.
+fn fortran_e0(v: f64, d: usize, w: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{:>w$}", format!("0.{}E+00", "0".repeat(d)));
+    }
+    let s = format!("{:.*E}", d.saturating_sub(1), v.abs());
+    let (mant, exp) = s.split_once('E').unwrap_or((&s, "0"));
+    let digits: String = mant.chars().filter(char::is_ascii_digit).collect();
+    let e = exp.parse::<i32>().unwrap_or(0) + 1;
+    let sign = if v < 0.0 { "-" } else { "" };
+    let esign = if e < 0 { '-' } else { '+' };
+    format!("{:>w$}", format!("{sign}0.{digits}E{esign}{:02}", e.abs()))
+}
+
+/// `Ew.d` (no scale factor), or for no value `missing` followed by `pad` blanks within `w`.
+fn e0_or(v: Option<f64>, d: usize, w: usize, missing: &str, pad: usize) -> String {
+    v.map_or_else(
+        || format!("{missing:>width$}{:pad$}", "", width = w - pad),
+        |x| fortran_e0(x, d, w),
+    )
+}
+
+/// The first page: BASIC BODY PROPERTIES, the moment reference centre on the wing's MAC and
+/// BASIC PLANFORM PROPERTIES (the blocks the case has).
+pub(crate) fn basic_properties(out: &mut String, a: &AuxiliaryJson, xcg: f64, zcg: f64) {
+    if let Some(b) = &a.body {
+        let _ = writeln!(out, "\n\n{:55}BASIC BODY PROPERTIES\n", "");
+        let _ = writeln!(
+            out,
+            "            WETTED AREA      XCG     ZCG     BASE AREA     ZERO LIFT DRAG   BASE DRAG   FRICTION DRAG   PRESSURE DRAG"
+        );
+        let line = format!(
+            "{}{}{}{}{}{}{}{}",
+            fortran_e0(b.wetted_area, 4, 23),
+            fortran_f(xcg, 2, 9),
+            fortran_f(zcg, 2, 8),
+            fortran_f(b.base_area, 4, 13),
+            e0_or(b.zero_lift_drag, 4, 18, "NDM", 4),
+            e0_or(b.base_drag, 4, 14, "NDM", 0),
+            e0_or(b.friction_drag, 4, 14, "NDM", 0),
+            e0_or(b.pressure_drag, 4, 16, "NA", 5),
+        );
+        let _ = writeln!(out, "{}", line.trim_end());
+    }
+    if let Some(x) = a.xcg_behind_mac_leading_edge {
+        let _ = writeln!(
+            out,
+            "\n\n{:41}XCG RELATIVE TO THEORETICAL LEADING EDGE MAC={}",
+            "",
+            fortran_f(x, 2, 7)
+        );
+    }
+    if a.planforms.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "\n\n{:55}BASIC PLANFORM PROPERTIES\n", "");
+    let _ = writeln!(
+        out,
+        "                                    TAPER     ASPECT   QUARTER CHORD             QUARTER CHORD              ZERO LIFT    FRICTION"
+    );
+    let _ = writeln!(
+        out,
+        "                         AREA       RATIO      RATIO       SWEEP        MAC        X(MAC)       Y(MAC)        DRAG     COEFFICIENT"
+    );
+    for p in &a.planforms {
+        let indent = match p.surface {
+            "WING" => 6,
+            "HORIZONTAL TAIL" => 2,
+            "VERTICAL TAIL" => 3,
+            _ => 4,
+        };
+        let _ = writeln!(out, "0{:indent$}{}", "", p.surface);
+        let row = |r: &RowJson| {
+            format!(
+                "+{}{}{}{}{}{}{}",
+                fortran_e0(r.area, 4, 31),
+                fortran_f(r.taper_ratio, 3, 9),
+                fortran_e0(r.aspect_ratio, 4, 14),
+                fortran_f(r.quarter_chord_sweep, 3, 10),
+                fortran_e0(r.mac, 3, 13),
+                fortran_e0(r.x_mac, 3, 13),
+                fortran_e0(r.y_mac, 3, 13),
+            )
+        };
+        let _ = writeln!(out, "   TOTAL THEORITICAL");
+        let _ = writeln!(out, "{}", row(&p.theoretical));
+        let _ = writeln!(out, "       TOTAL EXPOSED");
+        let _ = writeln!(
+            out,
+            "{}{}{}",
+            row(&p.exposed),
+            e0_or(p.zero_lift_drag, 3, 13, "NA", 5),
+            e0_or(p.friction_coefficient, 3, 13, "NA", 2),
+        );
+    }
+}
+
+/// The second page's interference line (nothing without a wing and a body).
+pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
+    let Some(w) = &a.wing_body else { return };
+    let _ = writeln!(
+        out,
+        "0          CLA-B(W)={}     CLA-W(B)={}     K-B(W)={}     K-W(B)={}     XAC/C-B(W)={}",
+        fortran_e(w.cla_body, 3, 10),
+        fortran_e(w.cla_wing, 3, 10),
+        fortran_e(w.k_body, 3, 10),
+        fortran_e(w.k_wing, 3, 10),
+        fortran_e(w.xac_over_c, 3, 10),
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fortran_e0;
+
+    #[test]
+    fn e_format_without_scale_factor() {
+        assert_eq!(fortran_e0(281.7, 4, 11), " 0.2817E+03");
+        assert_eq!(fortran_e0(-0.0076123, 3, 10), "-0.761E-02");
+        assert_eq!(fortran_e0(0.0, 4, 10), "0.0000E+00");
+        assert_eq!(fortran_e0(1.0, 3, 10), " 0.100E+01");
+    }
+}
