@@ -11,8 +11,11 @@
 //! - the wing-body interference line CLA-B(W), CLA-W(B), K-B(W), K-W(B), XAC/C-B(W)
 //!   (DATCOM 4.3.1.2, 4.3.2.2).
 //!
-//! Not produced yet (docs/output.md): the tail-body line, the sidewash, the body-vortex table,
-//! the dynamic-derivative incrementals and the transonic data-fairing tables.
+//! - the same line for the horizontal tail and the body, and the vertical tail's sidewash
+//!   factor (DATCOM 5.3.1.1).
+//!
+//! Not produced yet (docs/output.md): the body-vortex table, the dynamic-derivative
+//! incrementals and the transonic data-fairing tables.
 //!
 //! Values are SI (m, m²) and per radian, as everywhere inside the library; reports convert.
 
@@ -36,6 +39,12 @@ pub struct AuxiliaryOutput {
     /// The wing-body interference line; present with a wing and a body at subsonic speed
     /// (absent where the wing-body method fails: its error is among the page's warnings).
     pub wing_body: Option<crate::methods::wing_body::Auxiliary>,
+    /// The same line of the horizontal tail and the body (CLA-B(H), CLA-H(B), K-B(H), K-H(B),
+    /// XAC/C-B(H)); present with a horizontal tail behind the wing and a body.
+    pub tail_body: Option<crate::methods::wing_body::Auxiliary>,
+    /// The vertical tail's sidewash factor (1 + dσ/dβ) q_v/q (DATCOM 5.3.1.1, equation
+    /// 5.3.1.1-b); present with a wing, a body and a vertical tail.
+    pub sidewash: Option<f64>,
 }
 
 /// The body's areas and zero-lift drag (drag on the reference area).
@@ -131,12 +140,69 @@ pub fn auxiliary_output(
             crate::methods::wing_body::wing_body_with_section(case, index, alpha_deg, wing_section)
         })
         .and_then(|r| r.ok().map(|wb| wb.auxiliary));
+    let tail_body = (wing_body.is_some() && case.horizontal_tail.is_some())
+        .then(|| tail_body_line(case, index, alpha_deg))
+        .flatten();
+    let sidewash = (case.wing.is_some() && case.body.is_some() && case.vertical_tail.is_some())
+        .then(|| {
+            crate::methods::lateral::fin_lateral(
+                case,
+                index,
+                alpha_deg,
+                crate::methods::lateral::Fin::VerticalTail,
+            )
+            .ok()?
+            .fin_terms
+            .map(|t| t.sidewash)
+        })
+        .flatten();
     AuxiliaryOutput {
         body,
         xcg_behind_mac_leading_edge,
         planforms,
         wing_body,
+        tail_body,
+        sidewash,
     }
+}
+
+/// The horizontal tail's interference line: K_B(H), K_H(B) at the tail's d/b (DATCOM 4.3.1.2)
+/// times the tail's lift-curve slope on the reference area, and the centre of the lift carried
+/// over onto the body (DATCOM 4.3.2.2) from the tail's exposed planform.
+fn tail_body_line(
+    case: &Case,
+    index: usize,
+    alpha_deg: &[f64],
+) -> Option<crate::methods::wing_body::Auxiliary> {
+    use crate::methods::wing_body::{carry_over_centre, Auxiliary, CarryOverInputs};
+    let totals = crate::methods::tail::configuration(case, index, alpha_deg).ok()?;
+    let factors = &totals.terms.tail_body.as_ref()?.interference;
+    let tail = totals.terms.horizontal_tail.as_ref()?;
+    let p = &tail.surface.terms.planform;
+    let mach = case.conditions.get(index)?.mach;
+    let centre = carry_over_centre(
+        &CarryOverInputs {
+            exposed_aspect_ratio: p.aspect_ratio,
+            exposed_taper: p.taper,
+            exposed_root_chord: p.exposed_root_chord,
+            tan_leading_edge: p.leading_edge.tan,
+            tan_quarter_chord: p.quarter_chord.tan,
+            span: 2.0 * p.semispan,
+            body_width: 2.0 * (p.semispan - p.exposed_semispan),
+            beta: (1.0 - mach * mach).abs().sqrt(),
+            reference_length: totals.reference_length,
+        },
+        &mut Vec::new(),
+    )
+    .ok()?;
+    let slope = tail.slope_per_rad;
+    Some(Auxiliary {
+        body_in_presence_of_wing_slope_per_rad: factors.body_in_presence_of_wing * slope,
+        wing_in_presence_of_body_slope_per_rad: factors.wing_in_presence_of_body * slope,
+        body_in_presence_of_wing: factors.body_in_presence_of_wing,
+        wing_in_presence_of_body: factors.wing_in_presence_of_body,
+        carry_over_centre: centre.over_reference_length,
+    })
 }
 
 /// Sweep of the quarter chord over a two-panel planform: the arc cosine of the panels' cosines

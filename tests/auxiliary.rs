@@ -1,8 +1,8 @@
 //! The PART card's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT against the original: every
 //! oracle deck with PART is run (original rules) and written as a listing (`--format for006`);
 //! on both listings the pages' records are read (BASIC BODY PROPERTIES line, XCG relative to
-//! the MAC, each TOTAL THEORITICAL / TOTAL EXPOSED planform row, the CLA-B(W) interference
-//! line) and compared number by number for the flight conditions at Mach ≤ 0.6.
+//! the MAC, each TOTAL THEORITICAL / TOTAL EXPOSED planform row, the CLA-B(W) and CLA-B(H)
+//! interference lines, the sidewash) and compared number by number for the flight conditions at Mach ≤ 0.6.
 //!
 //! Known defects of the original left out of the comparison (docs/differences.md): the
 //! ventral fin's rows (the fin takes the vertical tail's sweep), and the theoretical sweep of a
@@ -70,17 +70,18 @@ fn records(listing: &str) -> BTreeMap<(String, usize, String), Vec<String>> {
                     v[1..].split_whitespace().map(String::from).collect(),
                 );
             }
-        } else if t
-            .trim_start_matches('0')
-            .trim_start()
-            .starts_with("CLA-B(W)=")
-        {
+        } else if let Some((surface, t)) = ["W", "H"].iter().find_map(|s| {
+            let t = t.trim_start_matches('0').trim_start();
+            t.starts_with(&format!("CLA-B({s})=")).then_some((s, t))
+        }) {
             let tokens = t
                 .split('=')
                 .skip(1)
                 .filter_map(|p| p.split_whitespace().next().map(String::from))
                 .collect();
-            put("interference".into(), tokens);
+            put(format!("interference {surface}"), tokens);
+        } else if let Some(v) = t.split("QV/Q =").nth(1) {
+            put("sidewash".into(), vec![v.trim().to_string()]);
         }
     }
     out
@@ -145,7 +146,7 @@ fn part_pages_agree_with_the_original() {
                     continue;
                 }
                 let kind = match key.2.as_str() {
-                    "body" | "xcg" | "interference" => key.2.clone(),
+                    "body" | "xcg" | "sidewash" => key.2.clone(),
                     r => r.split(" TOTAL").next().unwrap_or(r).to_lowercase(),
                 };
                 let mine = ours.get(&key);

@@ -22,6 +22,10 @@ pub struct AuxiliaryJson {
     pub planforms: Vec<PlanformJson>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wing_body: Option<InterferenceJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tail_body: Option<InterferenceJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sidewash: Option<f64>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -54,19 +58,16 @@ pub struct RowJson {
     pub y_mac: f64,
 }
 
-/// The interference line, named as the original prints it: lift-curve slopes per degree (as
-/// the original prints them whatever DERIV says), on the reference area.
+/// An interference line (surface S = wing W or horizontal tail H): CLA-B(S) `cla_body`,
+/// CLA-S(B) `cla_surface` (lift-curve slopes per degree, as the original prints them whatever
+/// DERIV says, on the reference area), K-B(S) `k_body`, K-S(B) `k_surface`, XAC/C-B(S)
+/// `xac_over_c`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InterferenceJson {
-    #[serde(rename = "CLA-B(W)")]
     pub cla_body: f64,
-    #[serde(rename = "CLA-W(B)")]
-    pub cla_wing: f64,
-    #[serde(rename = "K-B(W)")]
+    pub cla_surface: f64,
     pub k_body: f64,
-    #[serde(rename = "K-W(B)")]
-    pub k_wing: f64,
-    #[serde(rename = "XAC/C-B(W)")]
+    pub k_surface: f64,
     pub xac_over_c: f64,
 }
 
@@ -84,8 +85,15 @@ pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
         x_mac: len(r.x_mac_quarter_chord),
         y_mac: len(r.y_mac),
     };
-    // The original prints the interference line per degree whatever DERIV says.
+    // The original prints the interference lines per degree whatever DERIV says.
     let per = |per_rad: f64| per_rad * std::f64::consts::PI / 180.0;
+    let interference = |w: crate::methods::wing_body::Auxiliary| InterferenceJson {
+        cla_body: per(w.body_in_presence_of_wing_slope_per_rad),
+        cla_surface: per(w.wing_in_presence_of_body_slope_per_rad),
+        k_body: w.body_in_presence_of_wing,
+        k_surface: w.wing_in_presence_of_body,
+        xac_over_c: w.carry_over_centre,
+    };
     AuxiliaryJson {
         body: a.body.map(|b| BodyJson {
             wetted_area: area(b.wetted_area),
@@ -107,13 +115,9 @@ pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
                 friction_coefficient: p.friction_coefficient,
             })
             .collect(),
-        wing_body: a.wing_body.map(|w| InterferenceJson {
-            cla_body: per(w.body_in_presence_of_wing_slope_per_rad),
-            cla_wing: per(w.wing_in_presence_of_body_slope_per_rad),
-            k_body: w.body_in_presence_of_wing,
-            k_wing: w.wing_in_presence_of_body,
-            xac_over_c: w.carry_over_centre,
-        }),
+        wing_body: a.wing_body.map(interference),
+        tail_body: a.tail_body.map(interference),
+        sidewash: a.sidewash,
     }
 }
 
@@ -214,18 +218,28 @@ pub(crate) fn basic_properties(out: &mut String, a: &AuxiliaryJson, xcg: f64, zc
     }
 }
 
-/// The second page's interference line (nothing without a wing and a body).
+/// The second page's interference lines and sidewash (nothing without a wing and a body).
 pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
-    let Some(w) = &a.wing_body else { return };
-    let _ = writeln!(
-        out,
-        "0          CLA-B(W)={}     CLA-W(B)={}     K-B(W)={}     K-W(B)={}     XAC/C-B(W)={}",
-        fortran_e(w.cla_body, 3, 10),
-        fortran_e(w.cla_wing, 3, 10),
-        fortran_e(w.k_body, 3, 10),
-        fortran_e(w.k_wing, 3, 10),
-        fortran_e(w.xac_over_c, 3, 10),
-    );
+    for (w, s) in [(&a.wing_body, 'W'), (&a.tail_body, 'H')] {
+        let Some(w) = w else { continue };
+        let _ = writeln!(
+            out,
+            "0          CLA-B({s})={}     CLA-{s}(B)={}     K-B({s})={}     K-{s}(B)={}     XAC/C-B({s})={}",
+            fortran_e(w.cla_body, 3, 10),
+            fortran_e(w.cla_surface, 3, 10),
+            fortran_e(w.k_body, 3, 10),
+            fortran_e(w.k_surface, 3, 10),
+            fortran_e(w.xac_over_c, 3, 10),
+        );
+    }
+    if let Some(s) = a.sidewash {
+        let _ = writeln!(
+            out,
+            "0{:38}SIDEWASH, (1 + D(SIGMA)/D(BETA))QV/Q ={}",
+            "",
+            fortran_e(s, 7, 14)
+        );
+    }
 }
 
 #[cfg(test)]
