@@ -231,3 +231,107 @@ fn part_output_is_on_the_case_configuration_only() {
     assert!(listing.contains("CONFIGURATION AUXILIARY AND PARTIAL OUTPUT"));
     assert!(listing.contains("CLA-B(W)="));
 }
+
+/// Half a unit in the last digit of the listing's formats, relative: E formats print 3 or 4
+/// significant digits (0.ddd at worst 0.100, so 5e-3).
+const PRINTED_RELATIVE: f64 = 5e-3;
+/// F formats: XCG on the MAC F7.2, taper ratio and sweep F.3, base area F.4: half a unit.
+const PRINTED_ABSOLUTE: [(&str, f64); 4] = [
+    ("xcg_behind_mac_leading_edge", 0.005),
+    ("taper_ratio", 0.0005),
+    ("quarter_chord_sweep", 0.0005),
+    ("base_area", 0.00005),
+];
+
+/// Every number of `ours` equals the same field of `back` within the printed precision.
+fn same_within_print(
+    ours: &serde_json::Value,
+    back: &serde_json::Value,
+    path: &str,
+) -> Vec<String> {
+    use serde_json::Value;
+    match (ours, back) {
+        (Value::Object(a), Value::Object(b)) => a
+            .iter()
+            .flat_map(|(k, v)| {
+                same_within_print(v, b.get(k).unwrap_or(&Value::Null), &format!("{path}.{k}"))
+            })
+            .collect(),
+        (Value::Array(a), Value::Array(b)) if a.len() == b.len() => a
+            .iter()
+            .zip(b)
+            .enumerate()
+            .flat_map(|(i, (x, y))| same_within_print(x, y, &format!("{path}[{i}]")))
+            .collect(),
+        (Value::Number(x), Value::Number(y)) => {
+            let (x, y) = (
+                x.as_f64().unwrap_or(f64::NAN),
+                y.as_f64().unwrap_or(f64::NAN),
+            );
+            let absolute = PRINTED_ABSOLUTE
+                .iter()
+                .find(|(k, _)| path.ends_with(k))
+                .map_or(0.0, |(_, a)| *a);
+            let ok = (x - y).abs() <= PRINTED_RELATIVE * x.abs() + absolute;
+            if ok {
+                Vec::new()
+            } else {
+                vec![format!("{path}: ours {x}, read back {y}")]
+            }
+        }
+        (a, b) if a == b => Vec::new(),
+        (a, b) => vec![format!("{path}: ours {a}, read back {b}")],
+    }
+}
+
+/// Our listing's PART pages read back by the importer give our JSON's `auxiliary` numbers.
+#[test]
+fn part_pages_read_back_to_our_numbers() {
+    let Some(decks) =
+        common::oracle_cases("auxiliary (PART round trip)", &["AUXILIARY AND PARTIAL"])
+    else {
+        return;
+    };
+    let (mut blocks, mut problems) = (0, Vec::new());
+    for (name, text, _) in &decks {
+        let deck = datcom::read_deck(text, name).with_original_rules();
+        let results = datcom::run(&deck);
+        let ours: serde_json::Value =
+            serde_json::to_value(datcom::report::json::view(&results)).unwrap();
+        let listing = datcom::report::for006::to_string(&results);
+        let back: serde_json::Value =
+            serde_json::from_str(&datcom::report::json::listing_to_string(&listing, name)).unwrap();
+        for (ci, case) in ours["cases"].as_array().unwrap().iter().enumerate() {
+            // Our listing prints one page per condition and configuration, as `run` lists them.
+            let conditions = case["conditions"].as_array().unwrap();
+            let read = back["cases"][ci]["conditions"]
+                .as_array()
+                .cloned()
+                .unwrap_or_default();
+            for (k, c) in conditions.iter().enumerate() {
+                let Some(a) = c.get("auxiliary") else {
+                    continue;
+                };
+                blocks += 1;
+                let b = read.get(k).and_then(|r| r.get("auxiliary")).cloned();
+                match b {
+                    Some(b) => problems.extend(same_within_print(
+                        a,
+                        &b,
+                        &format!("{name} case {} condition {k}", ci + 1),
+                    )),
+                    None => problems.push(format!(
+                        "{name} case {} condition {k}: not read back",
+                        ci + 1
+                    )),
+                }
+            }
+        }
+    }
+    eprintln!(
+        "PART blocks read back: {blocks}, problems: {}",
+        problems.len()
+    );
+    assert!(blocks >= 29, "only {blocks} blocks");
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}

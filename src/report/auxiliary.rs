@@ -13,7 +13,7 @@ use crate::results::CaseResults;
 
 /// The auxiliary output in the deck's units (lengths in DIM units divided back by SCALE,
 /// the interference line's slopes per degree).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct AuxiliaryJson {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub body: Option<BodyJson>,
@@ -239,6 +239,100 @@ pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
             "",
             fortran_e(s, 7, 14)
         );
+    }
+}
+
+fn number(t: &str) -> Option<f64> {
+    t.parse::<f64>().ok().filter(|v| v.is_finite())
+}
+
+/// A planform row's first seven numbers (area ... Y(MAC)) and the tokens after them.
+fn planform_row(line: &str) -> Option<(RowJson, Vec<&str>)> {
+    let w: Vec<&str> = line.get(1..)?.split_whitespace().collect();
+    let v: Vec<f64> = w.iter().take(7).map(|t| number(t)).collect::<Option<_>>()?;
+    let row = RowJson {
+        area: *v.first()?,
+        taper_ratio: *v.get(1)?,
+        aspect_ratio: *v.get(2)?,
+        quarter_chord_sweep: *v.get(3)?,
+        mac: *v.get(4)?,
+        x_mac: *v.get(5)?,
+        y_mac: *v.get(6)?,
+    };
+    Some((row, w.into_iter().skip(7).collect()))
+}
+
+/// Reads the blocks of one CONFIGURATION AUXILIARY AND PARTIAL OUTPUT page (the lines after
+/// its FLIGHT CONDITIONS block) into `into`: what [`basic_properties`] and [`interference`]
+/// print, from our listings or the original's. Rows of cranked planforms' panels are skipped.
+pub fn read_page(lines: &[&str], into: &mut AuxiliaryJson) {
+    let mut surface: Option<&'static str> = None;
+    let mut theoretical: Option<RowJson> = None;
+    for (k, l) in lines.iter().enumerate() {
+        let t = l.trim();
+        let t0 = t.trim_start_matches('0').trim();
+        let next = lines.get(k + 1).copied().unwrap_or("");
+        if t.starts_with("WETTED AREA") {
+            let w: Vec<&str> = next.split_whitespace().collect();
+            let at = |i: usize| w.get(i).and_then(|t| number(t));
+            if let (Some(wet), Some(base)) = (at(0), at(3)) {
+                into.body = Some(BodyJson {
+                    wetted_area: wet,
+                    base_area: base,
+                    zero_lift_drag: at(4),
+                    base_drag: at(5),
+                    friction_drag: at(6),
+                    pressure_drag: at(7),
+                });
+            }
+        } else if let Some(v) = t0.strip_prefix("XCG RELATIVE TO THEORETICAL LEADING EDGE MAC=") {
+            into.xcg_behind_mac_leading_edge = number(v.trim());
+        } else if let Some(s) = ["WING", "HORIZONTAL TAIL", "VERTICAL TAIL", "VENTRAL FIN"]
+            .into_iter()
+            .find(|s| l.starts_with('0') && t0 == *s)
+        {
+            surface = Some(s);
+            theoretical = None;
+        } else if t == "TOTAL THEORITICAL" {
+            theoretical = planform_row(next).map(|(r, _)| r);
+        } else if t == "TOTAL EXPOSED" {
+            if let (Some(s), Some(th), Some((ex, rest))) =
+                (surface, theoretical.take(), planform_row(next))
+            {
+                into.planforms.push(PlanformJson {
+                    surface: s,
+                    theoretical: th,
+                    exposed: ex,
+                    zero_lift_drag: rest.first().and_then(|t| number(t)),
+                    friction_coefficient: rest.get(1).and_then(|t| number(t)),
+                });
+            }
+        } else if let Some(which) = ['W', 'H']
+            .into_iter()
+            .find(|s| t0.starts_with(&format!("CLA-B({s})=")))
+        {
+            let v: Vec<f64> = t0
+                .split('=')
+                .skip(1)
+                .filter_map(|p| p.split_whitespace().next().and_then(number))
+                .collect();
+            if let [cla_body, cla_surface, k_body, k_surface, xac_over_c] = v[..] {
+                let line = Some(InterferenceJson {
+                    cla_body,
+                    cla_surface,
+                    k_body,
+                    k_surface,
+                    xac_over_c,
+                });
+                if which == 'W' {
+                    into.wing_body = line;
+                } else {
+                    into.tail_body = line;
+                }
+            }
+        } else if let Some(v) = t0.split("QV/Q =").nth(1) {
+            into.sidewash = number(v.trim());
+        }
     }
 }
 

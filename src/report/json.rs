@@ -388,7 +388,7 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                                     epsilon: listed_column(&k.downwash, "EPSLON"),
                                     gradient: listed_column(&k.downwash, "D(EPSLON)/D(ALPHA)"),
                                 }),
-                                auxiliary: None,
+                                auxiliary: k.auxiliary.clone(),
                             }
                         })
                         .collect(),

@@ -236,6 +236,8 @@ pub struct ListedCondition {
     pub dynamics: Option<Table>,
     /// The downwash table printed under the static page.
     pub downwash: Option<Table>,
+    /// With PART: the CONFIGURATION AUXILIARY AND PARTIAL OUTPUT pages of this condition.
+    pub auxiliary: Option<super::auxiliary::AuxiliaryJson>,
 }
 
 /// One case of a listing.
@@ -264,7 +266,8 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
         let kind = lines.get(i + 1).map_or("", |s| s.trim());
         let is_static = kind == "CHARACTERISTICS AT ANGLE OF ATTACK AND IN SIDESLIP";
         let is_dynamic = kind == "DYNAMIC DERIVATIVES";
-        if !(is_static || is_dynamic) {
+        let is_auxiliary = kind == "CONFIGURATION AUXILIARY AND PARTIAL OUTPUT";
+        if !(is_static || is_dynamic || is_auxiliary) {
             continue;
         }
         let configuration = lines.get(i + 2).map_or("", |s| s.trim()).to_string();
@@ -290,6 +293,29 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             page: kind.to_string(),
             ..row
         };
+        if is_auxiliary {
+            // Onto the condition's page of the same configuration read before it.
+            let end = (fc + 5..lines.len())
+                .find(|&k| lines[k].starts_with('1'))
+                .unwrap_or(lines.len());
+            let same_row = |c: &ListedCondition| {
+                c.configuration == configuration
+                    && c.row
+                        .fields
+                        .iter()
+                        .map(|f| &f.text)
+                        .eq(row.fields.iter().map(|f| &f.text))
+            };
+            if let Some(c) = cases
+                .last_mut()
+                .filter(|_| !new_case)
+                .and_then(|case| case.conditions.iter_mut().rev().find(|c| same_row(c)))
+            {
+                let aux = c.auxiliary.get_or_insert_with(Default::default);
+                super::auxiliary::read_page(&lines[fc + 5..end], aux);
+            }
+            continue;
+        }
         let header = (fc + 5..(fc + 12).min(lines.len())).find(|&k| {
             let h = lines[k];
             h.starts_with('0') && h.contains("ALPHA") && (h.contains(" CD ") || h.contains("CLQ"))
@@ -361,6 +387,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
                     statics: None,
                     dynamics: None,
                     downwash: None,
+                    auxiliary: None,
                 });
                 case.conditions.len() - 1
             }
