@@ -340,3 +340,28 @@ fn broken_input_never_panics() {
         let _ = datcom::run(&read(text));
     }
 }
+
+/// Values beyond an array's capacity are reported and none of them is stored, whether the
+/// assignment starts inside the array or beyond it.
+#[test]
+fn values_beyond_capacity_are_reported_not_stored() {
+    let raw = deck::read(
+        " $BODY NX=2.0, X(19)=1.0,2.0,3.0$\n $WGPLNF CHRDR=1.0$\n $BODY R(25)=1.0$\n",
+        "t.dcm",
+    );
+    let too_many = raw
+        .diagnostics
+        .iter()
+        .filter(|d| d.to_string().contains("holds at most 20 values"))
+        .count();
+    assert_eq!(too_many, 2, "{:?}", raw.diagnostics);
+    let case = &raw.cases[0];
+    let x = numbers(case, "BODY", "X");
+    assert_eq!(x.len(), 20, "X(19)=1,2,3 keeps X(19), X(20): {x:?}");
+    assert_eq!(&x[18..], &[Some(1.0), Some(2.0)]);
+    assert!(
+        case.namelists["BODY"].get("R").is_none(),
+        "R(25) is beyond R's 20 elements: {:?}",
+        case.namelists["BODY"].get("R")
+    );
+}

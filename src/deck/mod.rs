@@ -1356,6 +1356,11 @@ impl Target<'_, '_> {
             );
             return;
         }
+        // Elements beyond the array's capacity are reported above and not stored; an
+        // assignment starting beyond it stores nothing.
+        if start > var.len {
+            return;
+        }
         let end = last.min(var.len);
         let record = &mut self.vars[index];
         // Recorded up to the first element assigned before, as a search that stops there.
