@@ -360,7 +360,7 @@ fn values_beyond_capacity_are_reported_not_stored() {
     assert_eq!(x.len(), 20, "X(19)=1,2,3 keeps X(19), X(20): {x:?}");
     assert_eq!(&x[18..], &[Some(1.0), Some(2.0)]);
     assert!(
-        case.namelists["BODY"].get("R").is_none(),
+        !case.namelists["BODY"].contains_key("R"),
         "R(25) is beyond R's 20 elements: {:?}",
         case.namelists["BODY"].get("R")
     );
