@@ -249,6 +249,16 @@ pub struct ListedCase {
     pub conditions: Vec<ListedCondition>,
 }
 
+/// Whether `c` is of the configuration and flight-condition row printed.
+fn same_page(c: &ListedCondition, configuration: &str, row: &ConditionRow) -> bool {
+    c.configuration == configuration
+        && c.row
+            .fields
+            .iter()
+            .map(|f| &f.text)
+            .eq(row.fields.iter().map(|f| &f.text))
+}
+
 /// Reads the static and dynamic tables of a listing, grouped by case, flight condition and
 /// configuration. A case begins where the original lists its input cards.
 pub fn read_listing(listing: &str) -> Vec<ListedCase> {
@@ -298,19 +308,12 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             let end = (fc + 5..lines.len())
                 .find(|&k| lines[k].starts_with('1'))
                 .unwrap_or(lines.len());
-            let same_row = |c: &ListedCondition| {
-                c.configuration == configuration
-                    && c.row
-                        .fields
-                        .iter()
-                        .map(|f| &f.text)
-                        .eq(row.fields.iter().map(|f| &f.text))
-            };
-            if let Some(c) = cases
-                .last_mut()
-                .filter(|_| !new_case)
-                .and_then(|case| case.conditions.iter_mut().rev().find(|c| same_row(c)))
-            {
+            if let Some(c) = cases.last_mut().filter(|_| !new_case).and_then(|case| {
+                case.conditions
+                    .iter_mut()
+                    .rev()
+                    .find(|c| same_page(c, &configuration, &row))
+            }) {
                 let aux = c.auxiliary.get_or_insert_with(Default::default);
                 super::auxiliary::read_page(&lines[fc + 5..end], aux);
             }
@@ -362,14 +365,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
                 .map(|u| u.split_whitespace().map(str::to_string).collect())
                 .unwrap_or_default();
         }
-        let same = |c: &ListedCondition| {
-            c.configuration == configuration
-                && c.row
-                    .fields
-                    .iter()
-                    .map(|f| &f.text)
-                    .eq(row.fields.iter().map(|f| &f.text))
-        };
+        let same = |c: &ListedCondition| same_page(c, &configuration, &row);
         let idx = match case.conditions.iter().position(|c| {
             same(c)
                 && if is_static {
