@@ -1,7 +1,7 @@
 //! The wing at Mach 0 (the original's CLMCH0): the reference lift of the wing's sideslip side
 //! force and the angle scale of the downwash.
 
-use super::{computed_wing_section, wing_alone_with_section, WingAlone, WingMethodError};
+use super::{computed_wing_section, wing_alone_parts, Parts, WingAlone, WingMethodError};
 use crate::case::Case;
 use crate::deck::cards::Surface;
 use crate::methods::body::subsonic_limit;
@@ -13,6 +13,8 @@ const TSMACH_RANGE: (f64, f64) = (1.01, 1.4);
 /// The wing alone at Mach 0 and the rule it was computed with.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MachZeroWing {
+    /// Its lift only: the drag and pitching-moment columns and terms are none (the Mach-0
+    /// wing serves the sideslip and downwash methods by its lift).
     pub wing: WingAlone,
     /// The section's CLAMO replaced its first lift-curve slope (a Mach number of the case lies
     /// between STMACH and TSMACH and CLAMO is given).
@@ -75,7 +77,7 @@ pub fn mach_zero_wing(
         c.per_mach.truncate(1);
         c
     });
-    let wing = wing_alone_with_section(&proxy, 0, alpha_deg, computed.as_ref())?;
+    let wing = wing_alone_parts(&proxy, 0, alpha_deg, computed.as_ref(), Parts::Lift)?;
     Ok(MachZeroWing {
         wing,
         transonic_slope,

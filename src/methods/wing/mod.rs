@@ -312,6 +312,26 @@ pub fn wing_alone_with_section(
     alpha_deg: &[f64],
     computed: Option<&SectionCharacteristics>,
 ) -> Result<WingAlone, WingMethodError> {
+    wing_alone_parts(case, condition_index, alpha_deg, computed, Parts::All)
+}
+
+/// What a wing-alone computation produces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Parts {
+    /// Lift, drag and pitching moment.
+    All,
+    /// The lift curve and its terms only: no drag, no pitching moment (their columns none).
+    /// The wing at Mach 0 is used for its lift alone ([`mach_zero_wing`]).
+    Lift,
+}
+
+pub(crate) fn wing_alone_parts(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    computed: Option<&SectionCharacteristics>,
+    parts: Parts,
+) -> Result<WingAlone, WingMethodError> {
     let plan = case.wing.as_ref().ok_or(WingMethodError::NoWing)?;
     if case.larwb.is_some() {
         return Err(WingMethodError::LowAspectRatioWingBody);
@@ -464,6 +484,7 @@ pub fn wing_alone_with_section(
         twist_deg,
     });
     let (zero_lift_drag, lift_drag) = match &drag_inputs {
+        _ if parts == Parts::Lift => (None, None),
         None => {
             warnings.push(WingWarning::NoDrag {
                 reason: "no section thickness ratio (TOVC)".into(),
@@ -507,44 +528,49 @@ pub fn wing_alone_with_section(
             * p.inboard.leading_edge.tan
             * incidence_deg.to_radians().cos();
     let moment_reference = (xcg - root_le) / p.exposed_root_chord;
-    let zero_lift = zero_lift_moment(
-        &p,
-        section.cm0,
-        twist_deg,
-        mach,
-        reference_area,
-        reference_length,
-        &mut warnings,
-    )?;
-    let low_ar_centre = class.low_aspect_ratio;
-    let xac = aerodynamic_centre(
-        &p,
-        kind,
-        low_ar_centre,
-        section.aerodynamic_centre,
-        beta,
-        (slope.inboard_panel_per_rad, slope.extended_outboard_per_rad),
-        &mut warnings,
-    )?;
-    let moment = pitching_moment(
-        &MomentInputs {
-            planform: &p,
-            kind,
-            c1_cos_le: class.c1_cos_le,
-            zero_lift,
-            aerodynamic_centre: xac,
-            moment_reference,
+    let (moment, cma_first) = if parts == Parts::Lift {
+        (None, None)
+    } else {
+        let zero_lift = zero_lift_moment(
+            &p,
+            section.cm0,
+            twist_deg,
+            mach,
+            reference_area,
             reference_length,
-            alpha_max_lift_deg: maximum.alpha_deg,
-            delta_y_percent: delta_y,
-        },
-        &lift,
-        &mut warnings,
-    )?;
-    let cma_first = moment.as_ref().map_or(
-        (moment_reference - xac) * p.exposed_root_chord / reference_length * slope.per_rad,
-        |m| m.dcm_dcl * slope.per_rad,
-    );
+            &mut warnings,
+        )?;
+        let low_ar_centre = class.low_aspect_ratio;
+        let xac = aerodynamic_centre(
+            &p,
+            kind,
+            low_ar_centre,
+            section.aerodynamic_centre,
+            beta,
+            (slope.inboard_panel_per_rad, slope.extended_outboard_per_rad),
+            &mut warnings,
+        )?;
+        let moment = pitching_moment(
+            &MomentInputs {
+                planform: &p,
+                kind,
+                c1_cos_le: class.c1_cos_le,
+                zero_lift,
+                aerodynamic_centre: xac,
+                moment_reference,
+                reference_length,
+                alpha_max_lift_deg: maximum.alpha_deg,
+                delta_y_percent: delta_y,
+            },
+            &lift,
+            &mut warnings,
+        )?;
+        let cma_first = moment.as_ref().map_or(
+            (moment_reference - xac) * p.exposed_root_chord / reference_length * slope.per_rad,
+            |m| m.dcm_dcl * slope.per_rad,
+        );
+        (moment, Some(cma_first))
+    };
 
     // The page.
     let n = alpha_deg.len();
@@ -564,7 +590,7 @@ pub fn wing_alone_with_section(
     let mut cma = curve_slopes(&alpha_rad, &cm);
     if n > 0 {
         cla[0] = Some(slope.per_rad);
-        cma[0] = Some(cma_first);
+        cma[0] = cma_first;
     }
     // The original leaves low-aspect-ratio straight wings out of the NA rule.
     let low_aspect_straight =
