@@ -14,8 +14,12 @@
 //! - the same line for the horizontal tail and the body, and the vertical tail's sidewash
 //!   factor (DATCOM 5.3.1.1).
 //!
-//! Not produced yet (docs/output.md): the body-vortex table, the dynamic-derivative
-//! incrementals and the transonic data-fairing tables.
+//! - with DAMP, the wing's roll- and yaw-rate increments (DATCOM 7.1.2.1 to 7.1.2.3), its
+//!   Clβ per degree of dihedral (5.1.2.1) and the surfaces' ΔCm0 per degree of twist
+//!   (4.1.4.1).
+//!
+//! Not produced yet (docs/output.md): the body-vortex table and the transonic data-fairing
+//! tables.
 //!
 //! Values are SI (m, m²) and per radian, as everywhere inside the library; reports convert.
 
@@ -45,6 +49,14 @@ pub struct AuxiliaryOutput {
     /// The vertical tail's sidewash factor (1 + dσ/dβ) q_v/q (DATCOM 5.3.1.1, equation
     /// 5.3.1.1-b); present with a wing, a body and a vertical tail.
     pub sidewash: Option<f64>,
+    /// With DAMP: the wing's roll- and yaw-rate increments (DYNAMIC DERIVATIVE INCREMENTALS).
+    pub roll_increments: Option<crate::methods::dynamic::RollIncrements>,
+    /// The wing's Clβ per degree of uniform dihedral, per deg² (figure 5.1.2.1-29): CLB/GAMMA.
+    pub clb_per_dihedral: Option<f64>,
+    /// ΔCm0 per degree of twist of the wing and of the horizontal tail (figure 4.1.4.1-5),
+    /// present when the surface is twisted: (CMO/THETA)W, (CMO/THETA)H.
+    pub wing_cm0_per_twist: Option<f64>,
+    pub tail_cm0_per_twist: Option<f64>,
 }
 
 /// The body's areas and zero-lift drag (drag on the reference area).
@@ -118,6 +130,13 @@ pub fn auxiliary_output(
             pressure_drag: drag.as_ref().and_then(|d| d.pressure),
         })
     });
+    let wing = case.wing.as_ref().and_then(|_| {
+        crate::methods::wing::wing_alone_with_section(case, index, alpha_deg, wing_section).ok()
+    });
+    let tail = case
+        .horizontal_tail
+        .as_ref()
+        .and_then(|_| crate::methods::tail::horizontal_tail_alone(case, index, alpha_deg).ok());
     let planforms: Vec<PlanformProperties> = [
         Surface::Wing,
         Surface::HorizontalTail,
@@ -125,7 +144,7 @@ pub fn auxiliary_output(
         Surface::VentralFin,
     ]
     .into_iter()
-    .filter_map(|s| planform_properties(case, index, alpha_deg, wing_section, s))
+    .filter_map(|s| planform_properties(case, index, s, wing.as_ref(), tail.as_ref()))
     .collect();
     let xcg_behind_mac_leading_edge =
         planforms
@@ -156,6 +175,28 @@ pub fn auxiliary_output(
             .map(|t| t.sidewash)
         })
         .flatten();
+    let per_twist = |w: &crate::methods::wing::WingAlone| {
+        w.terms
+            .pitching_moment
+            .as_ref()
+            .and_then(|m| m.zero_lift.per_twist)
+    };
+    let roll_increments = wing
+        .as_ref()
+        .filter(|_| case.cards.damp)
+        .and_then(|w| crate::methods::dynamic::wing_dynamic(case, index, alpha_deg, w).ok())
+        .and_then(|(_, terms)| terms.increments);
+    let clb_per_dihedral = wing
+        .as_ref()
+        .and_then(|w| crate::methods::lateral::wing_lateral(case, index, alpha_deg, w).ok())
+        .and_then(|l| l.wing_terms)
+        .and_then(|t| match t.rolling_moment {
+            Some(crate::methods::lateral::RollingMomentTerms::Straight {
+                dihedral: crate::methods::lateral::DihedralRoll::Uniform { per_dihedral, .. },
+                ..
+            }) => Some(per_dihedral),
+            _ => None,
+        });
     AuxiliaryOutput {
         body,
         xcg_behind_mac_leading_edge,
@@ -163,6 +204,10 @@ pub fn auxiliary_output(
         wing_body,
         tail_body,
         sidewash,
+        roll_increments,
+        clb_per_dihedral,
+        wing_cm0_per_twist: wing.as_ref().and_then(per_twist),
+        tail_cm0_per_twist: tail.as_ref().and_then(|t| per_twist(&t.surface)),
     }
 }
 
@@ -222,9 +267,9 @@ fn total_quarter_chord_sweep_deg(g: &crate::geometry::PlanformGeometry, type1: b
 fn planform_properties(
     case: &Case,
     index: usize,
-    alpha_deg: &[f64],
-    wing_section: Option<&SectionCharacteristics>,
     surface: Surface,
+    wing: Option<&crate::methods::wing::WingAlone>,
+    tail: Option<&crate::methods::tail::HorizontalTailAlone>,
 ) -> Option<PlanformProperties> {
     let syn = case.synthesis.as_ref();
     let (p, span, x0, z0): (&Planform, Span, Option<f64>, Option<f64>) = match surface {
@@ -276,7 +321,16 @@ fn planform_properties(
         // original leaves ZV out of the exposed row, as it prints it).
         y_mac: g.exposed.y_mac + g.semispan - g.exposed_semispan,
     };
-    let drag = surface_zero_lift_drag(case, index, alpha_deg, wing_section, surface);
+    let drag = match surface {
+        Surface::Wing => wing.and_then(|w| w.terms.zero_lift_drag),
+        Surface::HorizontalTail => tail.and_then(|t| t.surface.terms.zero_lift_drag),
+        Surface::VerticalTail | Surface::VentralFin => {
+            crate::methods::tail::fin_zero_lift_drag(case, index, surface, &mut Vec::new())
+                .ok()
+                .flatten()
+                .map(|f| f.drag)
+        }
+    };
     Some(PlanformProperties {
         surface,
         theoretical,
@@ -284,36 +338,4 @@ fn planform_properties(
         zero_lift_drag: drag.as_ref().map(|d| d.total),
         friction_coefficient: drag.map(|d| d.inboard.skin_friction_coefficient),
     })
-}
-
-/// The exposed surface's zero-lift drag from the surface's own method (DATCOM 4.1.5.1).
-fn surface_zero_lift_drag(
-    case: &Case,
-    index: usize,
-    alpha_deg: &[f64],
-    wing_section: Option<&SectionCharacteristics>,
-    surface: Surface,
-) -> Option<crate::methods::wing::WingZeroLiftDrag> {
-    match surface {
-        Surface::Wing => {
-            crate::methods::wing::wing_alone_with_section(case, index, alpha_deg, wing_section)
-                .ok()?
-                .terms
-                .zero_lift_drag
-        }
-        Surface::HorizontalTail => {
-            crate::methods::tail::horizontal_tail_alone(case, index, alpha_deg)
-                .ok()?
-                .surface
-                .terms
-                .zero_lift_drag
-        }
-        Surface::VerticalTail | Surface::VentralFin => {
-            let mut ignored = Vec::new();
-            crate::methods::tail::fin_zero_lift_drag(case, index, surface, &mut ignored)
-                .ok()
-                .flatten()
-                .map(|f| f.drag)
-        }
-    }
 }

@@ -2,7 +2,8 @@
 //! oracle deck with PART is run (original rules) and written as a listing (`--format for006`);
 //! on both listings the pages' records are read (BASIC BODY PROPERTIES line, XCG relative to
 //! the MAC, each TOTAL THEORITICAL / TOTAL EXPOSED planform row, the CLA-B(W) and CLA-B(H)
-//! interference lines, the sidewash) and compared number by number for the flight conditions at Mach ≤ 0.6.
+//! interference lines, the sidewash, the dynamic-derivative increments with CLB/GAMMA and the
+//! twist terms) and compared number by number for the flight conditions at Mach ≤ 0.6.
 //!
 //! Known defects of the original left out of the comparison (docs/differences.md): the
 //! ventral fin's rows (the fin takes the vertical tail's sweep), and the theoretical sweep of a
@@ -82,6 +83,23 @@ fn records(listing: &str) -> BTreeMap<(String, usize, String), Vec<String>> {
             put(format!("interference {surface}"), tokens);
         } else if let Some(v) = t.split("QV/Q =").nth(1) {
             put("sidewash".into(), vec![v.trim().to_string()]);
+        } else if t.starts_with("CLP(GAMMA=CL=0) =") {
+            let after = |line: &str| -> Vec<String> {
+                line.split('=')
+                    .skip(1)
+                    .filter_map(|p| p.split_whitespace().next().map(String::from))
+                    .collect()
+            };
+            let mut tokens = after(t);
+            tokens.extend(after(lines.get(i + 1).copied().unwrap_or("")));
+            put("increments".into(), tokens);
+        } else if t.starts_with("CLB/GAMMA") {
+            if let Some(v) = lines.get(i + 1) {
+                put(
+                    "clb and twist".into(),
+                    v.split_whitespace().map(String::from).collect(),
+                );
+            }
         }
     }
     out
@@ -146,7 +164,7 @@ fn part_pages_agree_with_the_original() {
                     continue;
                 }
                 let kind = match key.2.as_str() {
-                    "body" | "xcg" | "sidewash" => key.2.clone(),
+                    "body" | "xcg" | "sidewash" | "increments" | "clb and twist" => key.2.clone(),
                     r => r.split(" TOTAL").next().unwrap_or(r).to_lowercase(),
                 };
                 let mine = ours.get(&key);

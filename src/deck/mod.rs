@@ -928,7 +928,7 @@ impl<'a> Reader<'a> {
                     n,
                     col,
                     "PART",
-                    "of the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT only the basic body and planform properties, the interference lines and the sidewash are printed (not the body-vortex table, the dynamic-derivative incrementals or the transonic data fairing)",
+                    "of the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT the body-vortex table and the transonic data fairing are not printed",
                 );
             }
             Card::Trim => {

@@ -26,6 +26,28 @@ pub struct AuxiliaryJson {
     pub tail_body: Option<InterferenceJson>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sidewash: Option<f64>,
+    /// With DAMP: the wing's DYNAMIC DERIVATIVE INCREMENTALS, per radian as the original
+    /// prints them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roll_increments: Option<IncrementsJson>,
+    /// Clβ per degree of dihedral, per deg²: CLB/GAMMA.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clb_per_dihedral: Option<f64>,
+    /// ΔCm0 per degree of twist: (CMO/THETA)W, (CMO/THETA)H.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wing_cm0_per_twist: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tail_cm0_per_twist: Option<f64>,
+}
+
+/// CLP(GAMMA=CL=0), CLP(GAMMA)/CLP (GAMMA=0), CNP/THETA, CYP/GAMMA, CYP/CL (CL=0).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct IncrementsJson {
+    pub clp_zero_lift: f64,
+    pub dihedral_factor: f64,
+    pub cnp_per_twist: f64,
+    pub cyp_dihedral: f64,
+    pub cyp_per_cl: f64,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -118,6 +140,16 @@ pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
         wing_body: a.wing_body.map(interference),
         tail_body: a.tail_body.map(interference),
         sidewash: a.sidewash,
+        roll_increments: a.roll_increments.map(|r| IncrementsJson {
+            clp_zero_lift: r.clp_zero_lift,
+            dihedral_factor: r.dihedral_factor,
+            cnp_per_twist: r.cnp_per_twist,
+            cyp_dihedral: r.cyp_dihedral,
+            cyp_per_cl: r.cyp_per_cl,
+        }),
+        clb_per_dihedral: a.clb_per_dihedral,
+        wing_cm0_per_twist: a.wing_cm0_per_twist,
+        tail_cm0_per_twist: a.tail_cm0_per_twist,
     }
 }
 
@@ -240,6 +272,45 @@ pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
             fortran_e(s, 7, 14)
         );
     }
+    // With DAMP: the increments, then CLB/GAMMA and the twist terms (NA without twist).
+    let Some(r) = &a.roll_increments else { return };
+    let _ = writeln!(out, "\n\n{:50}DYNAMIC DERIVATIVE INCREMENTALS", "");
+    let _ = writeln!(
+        out,
+        "{:10}CLP(GAMMA=CL=0) ={}{:5}CLP(GAMMA)/CLP (GAMMA=0) ={}{:6}CNP/THETA ={}",
+        "",
+        fortran_e(r.clp_zero_lift, 4, 11),
+        "",
+        fortran_e(r.dihedral_factor, 4, 11),
+        "",
+        fortran_e(r.cnp_per_twist, 4, 11),
+    );
+    let _ = writeln!(
+        out,
+        "{:30}CYP/GAMMA ={}{:20}CYP/CL (CL=0) ={}\n",
+        "",
+        fortran_e(r.cyp_dihedral, 4, 11),
+        "",
+        fortran_e(r.cyp_per_cl, 4, 11),
+    );
+    let _ = writeln!(
+        out,
+        "{:45}CLB/GAMMA        (CMO/THETA)W     (CMO/THETA)H",
+        ""
+    );
+    // Fields of 17 columns: a value E11.4 first, NA right-aligned in the first six.
+    let value_first = |v: Option<f64>| match v {
+        Some(x) => format!("{}{:6}", fortran_e0(x, 4, 11), ""),
+        None => format!("{:>6}{:11}", "NA", ""),
+    };
+    let line = format!(
+        "{:45}{}{}{}",
+        "",
+        value_first(a.clb_per_dihedral),
+        value_first(a.wing_cm0_per_twist),
+        value_first(a.tail_cm0_per_twist),
+    );
+    let _ = writeln!(out, "{}", line.trim_end());
 }
 
 fn number(t: &str) -> Option<f64> {
@@ -332,6 +403,30 @@ pub fn read_page(lines: &[&str], into: &mut AuxiliaryJson) {
             }
         } else if let Some(v) = t0.split("QV/Q =").nth(1) {
             into.sidewash = number(v.trim());
+        } else if t0.starts_with("CLP(GAMMA=CL=0) =") {
+            // The numbers after the `=` signs (the labels hold `=` too: GAMMA=CL=0).
+            let after = |line: &str| -> Vec<f64> {
+                line.split('=')
+                    .skip(1)
+                    .filter_map(|p| p.split_whitespace().next().and_then(number))
+                    .collect()
+            };
+            let (first, second) = (after(t0), after(next));
+            if let ([c, d, n], [y, l]) = (&first[..], &second[..]) {
+                into.roll_increments = Some(IncrementsJson {
+                    clp_zero_lift: *c,
+                    dihedral_factor: *d,
+                    cnp_per_twist: *n,
+                    cyp_dihedral: *y,
+                    cyp_per_cl: *l,
+                });
+            }
+        } else if t0.starts_with("CLB/GAMMA") {
+            let w: Vec<&str> = next.split_whitespace().collect();
+            let at = |i: usize| w.get(i).and_then(|t| number(t));
+            into.clb_per_dihedral = at(0);
+            into.wing_cm0_per_twist = at(1);
+            into.tail_cm0_per_twist = at(2);
         }
     }
 }

@@ -32,7 +32,7 @@ pub use body::body_dynamic;
 pub use configuration::{
     fin_dynamic, wing_body_dynamic, wing_body_tail_dynamic, ConfigurationDynamic, TailConfiguration,
 };
-pub use surface::{horizontal_tail_dynamic, wing_dynamic, SurfaceDynamicTerms};
+pub use surface::{horizontal_tail_dynamic, wing_dynamic, RollIncrements, SurfaceDynamicTerms};
 
 /// Degrees per radian: the original's methods and charts work per degree.
 pub(crate) const DEG_PER_RAD: f64 = 180.0 / std::f64::consts::PI;

@@ -43,6 +43,26 @@ pub struct SurfaceDynamicTerms {
     /// β Clp/κ at zero lift (figures 7.1.2.2-20a to -20d) and κ·β.
     pub roll_damping_parameter: Option<f64>,
     pub kappa_beta: f64,
+    /// The roll-rate increments the original prints with PART (DYNAMIC DERIVATIVE
+    /// INCREMENTALS), none where the roll method does not get to them.
+    pub increments: Option<RollIncrements>,
+}
+
+/// The intermediate roll- and yaw-rate terms of a surface (DATCOM 7.1.2.1 to 7.1.2.3), per
+/// radian, on the surface's own area.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RollIncrements {
+    /// Clp at zero lift without dihedral, (β Clp/κ) κ/β: CLP(GAMMA=CL=0).
+    pub clp_zero_lift: f64,
+    /// 1 − 2 (z/b′) sin Γ + 3 (z/b′)² sin² Γ (b′ the semispan): CLP(GAMMA)/CLP(GAMMA=0).
+    pub dihedral_factor: f64,
+    /// ΔCnp per degree of twist (figure 7.1.2.3-12): CNP/THETA.
+    pub cnp_per_twist: f64,
+    /// The dihedral's side force 3 sin Γ (1 − 2 (z/b′) sin Γ) Clp(Γ = CL = 0): CYP/GAMMA as
+    /// the original labels it.
+    pub cyp_dihedral: f64,
+    /// (CYp/CL) at zero lift at this Mach number: CYP/CL (CL=0).
+    pub cyp_per_cl: f64,
 }
 
 /// The inputs shared by the surface methods.
@@ -465,8 +485,8 @@ fn roll_yaw(
     let induced: Vec<Option<f64>> = (0..n)
         .map(|i| Some((cl[i] * s_ratio).powi(2) / (a * PI)))
         .collect();
-    let twist = read(figures::ROLL_YAW_TWIST, &[taper, a], &mut out.warnings)?
-        * s.plan.twista_deg.unwrap_or(0.0);
+    let cnp_per_twist = read(figures::ROLL_YAW_TWIST, &[taper, a], &mut out.warnings)?;
+    let twist = cnp_per_twist * s.plan.twista_deg.unwrap_or(0.0);
     let kay: Vec<Option<f64>> = (0..n)
         .map(|i| {
             if cl[i] == 0.0 {
@@ -504,6 +524,13 @@ fn roll_yaw(
         &mut out.warnings,
     )?;
     let cyp_cl = (a + 4.0 * cos) * (a * bee + cos) * cyp_cl0 / ((a * bee + 4.0 * cos) * (a + cos));
+    terms.increments = Some(RollIncrements {
+        clp_zero_lift: clp_gamma,
+        dihedral_factor,
+        cnp_per_twist,
+        cyp_dihedral: dihedral_side,
+        cyp_per_cl: cyp_cl,
+    });
     let side_scale = scale * b / (2.0 * semispan);
     let cyp: Vec<Option<f64>> = (0..n)
         .map(|i| Some(side_scale * dihedral_side + side_scale * cyp_cl * s_ratio * kay[i]? * cl[i]))
@@ -626,6 +653,7 @@ pub fn wing_dynamic(
         zero_lift_drag: None,
         roll_damping_parameter: None,
         kappa_beta: 0.0,
+        increments: None,
     };
     pitch(&s, &mut out, &mut terms)?;
     roll_yaw(&s, &mut out, &mut terms, false)?;
@@ -680,6 +708,7 @@ pub fn horizontal_tail_dynamic(
         zero_lift_drag: None,
         roll_damping_parameter: None,
         kappa_beta: 0.0,
+        increments: None,
     };
     if case.wing.is_some() {
         pitch(&s, &mut out, &mut terms)?;
