@@ -18,8 +18,10 @@
 //!   Clβ per degree of dihedral (5.1.2.1) and the surfaces' ΔCm0 per degree of twist
 //!   (4.1.4.1).
 //!
-//! Not produced yet (docs/output.md): the body-vortex table and the transonic data-fairing
-//! tables.
+//! - the body-vortex table (DATCOM 4.3.1.3) at the wing and the horizontal tail.
+//!
+//! Not produced yet (docs/output.md): the wing vortices' factor at the tail (IV-W(H)) and the
+//! transonic data-fairing tables.
 //!
 //! Values are SI (m, m²) and per radian, as everywhere inside the library; reports convert.
 
@@ -49,6 +51,9 @@ pub struct AuxiliaryOutput {
     /// The vertical tail's sidewash factor (1 + dσ/dβ) q_v/q (DATCOM 5.3.1.1, equation
     /// 5.3.1.1-b); present with a wing, a body and a vertical tail.
     pub sidewash: Option<f64>,
+    /// The body vortices at the wing and, with a horizontal tail, at the tail (DATCOM
+    /// 4.3.1.3); present with a wing and a body.
+    pub vortices: Option<VortexTable>,
     /// With DAMP: the wing's roll- and yaw-rate increments (DYNAMIC DERIVATIVE INCREMENTALS).
     pub roll_increments: Option<crate::methods::dynamic::RollIncrements>,
     /// The wing's Clβ per degree of uniform dihedral, per deg² (figure 5.1.2.1-29): CLB/GAMMA.
@@ -57,6 +62,36 @@ pub struct AuxiliaryOutput {
     /// present when the surface is twisted: (CMO/THETA)W, (CMO/THETA)H.
     pub wing_cm0_per_twist: Option<f64>,
     pub tail_cm0_per_twist: Option<f64>,
+}
+
+/// The body-vortex table: per angle of attack, the vortex pair's interference factor and
+/// strength at the wing (IV-B(W), Γ/(2π α V r)) and at the horizontal tail (IV-B(H),
+/// (Γ/(2π α V r))T). The wing tip vortices' factor at the tail, IV-W(H), is not computed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct VortexTable {
+    pub alpha_deg: Vec<f64>,
+    pub wing: Vec<VortexAt>,
+    pub tail: Option<Vec<VortexAt>>,
+}
+
+/// The body vortex pair at a surface at one angle.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct VortexAt {
+    /// The surface's interference factor i of the pair (0 without vortices).
+    pub interference_factor: f64,
+    /// Γ/(2π α V r); 0 below the vortices' onset angle, none where they leave the body behind
+    /// the surface (the original's NDM).
+    pub strength: Option<f64>,
+}
+
+impl From<&crate::methods::wing_body::BodyVortex> for VortexAt {
+    fn from(v: &crate::methods::wing_body::BodyVortex) -> Self {
+        let behind = v.separation_station.is_some() && v.height.is_none();
+        VortexAt {
+            interference_factor: v.interference_factor,
+            strength: (!behind).then_some(v.strength),
+        }
+    }
 }
 
 /// The body's areas and zero-lift drag (drag on the reference area).
@@ -154,14 +189,25 @@ pub fn auxiliary_output(
                 let xcg = case.synthesis.as_ref().and_then(|s| s.xcg).unwrap_or(0.0);
                 xcg - (w.theoretical.x_mac_quarter_chord - w.theoretical.mac / 4.0)
             });
-    let wing_body = (case.wing.is_some() && case.body.is_some())
+    let combination = (case.wing.is_some() && case.body.is_some())
         .then(|| {
             crate::methods::wing_body::wing_body_with_section(case, index, alpha_deg, wing_section)
+                .ok()
         })
-        .and_then(|r| r.ok().map(|wb| wb.auxiliary));
-    let tail_body = (wing_body.is_some() && case.horizontal_tail.is_some())
-        .then(|| tail_body_line(case, index, alpha_deg))
         .flatten();
+    let wing_body = combination.as_ref().map(|wb| wb.auxiliary);
+    let totals = (combination.is_some() && case.horizontal_tail.is_some())
+        .then(|| crate::methods::tail::configuration(case, index, alpha_deg).ok())
+        .flatten();
+    let tail_body = totals.as_ref().and_then(|t| tail_body_line(case, index, t));
+    let vortices = combination.as_ref().map(|wb| VortexTable {
+        alpha_deg: alpha_deg.to_vec(),
+        wing: wb.terms.vortices.iter().map(VortexAt::from).collect(),
+        tail: totals
+            .as_ref()
+            .and_then(|t| t.terms.tail_body.as_ref())
+            .map(|tb| tb.vortices.iter().map(VortexAt::from).collect()),
+    });
     let sidewash = (case.wing.is_some() && case.body.is_some() && case.vertical_tail.is_some())
         .then(|| {
             crate::methods::lateral::fin_lateral(
@@ -204,6 +250,7 @@ pub fn auxiliary_output(
         wing_body,
         tail_body,
         sidewash,
+        vortices,
         roll_increments,
         clb_per_dihedral,
         wing_cm0_per_twist: wing.as_ref().and_then(per_twist),
@@ -217,10 +264,9 @@ pub fn auxiliary_output(
 fn tail_body_line(
     case: &Case,
     index: usize,
-    alpha_deg: &[f64],
+    totals: &crate::methods::tail::ConfigurationTotals,
 ) -> Option<crate::methods::wing_body::Auxiliary> {
     use crate::methods::wing_body::{carry_over_centre, Auxiliary, CarryOverInputs};
-    let totals = crate::methods::tail::configuration(case, index, alpha_deg).ok()?;
     let factors = &totals.terms.tail_body.as_ref()?.interference;
     let tail = totals.terms.horizontal_tail.as_ref()?;
     let p = &tail.surface.terms.planform;

@@ -26,6 +26,10 @@ pub struct AuxiliaryJson {
     pub tail_body: Option<InterferenceJson>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sidewash: Option<f64>,
+    /// The body-vortex table (IV-B(W), GAMMA/(2*PI*ALPHA*V*R) at the wing; IV-B(H) and its
+    /// GAMMA at the horizontal tail); `null` strength: the original's NDM.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vortices: Option<VortexJson>,
     /// With DAMP: the wing's DYNAMIC DERIVATIVE INCREMENTALS, per radian as the original
     /// prints them.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -38,6 +42,18 @@ pub struct AuxiliaryJson {
     pub wing_cm0_per_twist: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tail_cm0_per_twist: Option<f64>,
+}
+
+/// The body-vortex table by column.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct VortexJson {
+    pub alpha: Vec<f64>,
+    pub wing_interference: Vec<Option<f64>>,
+    pub wing_strength: Vec<Option<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tail_interference: Option<Vec<Option<f64>>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tail_strength: Option<Vec<Option<f64>>>,
 }
 
 /// CLP(GAMMA=CL=0), CLP(GAMMA)/CLP (GAMMA=0), CNP/THETA, CYP/GAMMA, CYP/CL (CL=0).
@@ -140,6 +156,20 @@ pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
         wing_body: a.wing_body.map(interference),
         tail_body: a.tail_body.map(interference),
         sidewash: a.sidewash,
+        vortices: a.vortices.as_ref().map(|v| {
+            let interference = |r: &[crate::auxiliary::VortexAt]| {
+                r.iter().map(|x| Some(x.interference_factor)).collect()
+            };
+            let strength =
+                |r: &[crate::auxiliary::VortexAt]| r.iter().map(|x| x.strength).collect();
+            VortexJson {
+                alpha: v.alpha_deg.clone(),
+                wing_interference: interference(&v.wing),
+                wing_strength: strength(&v.wing),
+                tail_interference: v.tail.as_deref().map(interference),
+                tail_strength: v.tail.as_deref().map(strength),
+            }
+        }),
         roll_increments: a.roll_increments.map(|r| IncrementsJson {
             clp_zero_lift: r.clp_zero_lift,
             dihedral_factor: r.dihedral_factor,
@@ -272,6 +302,9 @@ pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
             fortran_e(s, 7, 14)
         );
     }
+    if let Some(v) = &a.vortices {
+        vortex_table(out, v);
+    }
     // With DAMP: the increments, then CLB/GAMMA and the twist terms (NA without twist).
     let Some(r) = &a.roll_increments else { return };
     let _ = writeln!(out, "\n\n{:50}DYNAMIC DERIVATIVE INCREMENTALS", "");
@@ -311,6 +344,82 @@ pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
         value_first(a.tail_cm0_per_twist),
     );
     let _ = writeln!(out, "{}", line.trim_end());
+}
+
+/// Right edges of the body-vortex table's columns (ALPHA, IV-B(W), IV-W(H), IV-B(H), GAMMA,
+/// GAMMA at the tail), as the original prints them.
+const VORTEX_EDGES: [usize; 6] = [22, 39, 56, 73, 90, 115];
+
+/// The body-vortex table. Without a horizontal tail its columns are NA, as the original
+/// prints them; IV-W(H) (not computed) is left blank.
+fn vortex_table(out: &mut String, v: &VortexJson) {
+    let _ = writeln!(
+        out,
+        "\n\n\n{:16}ALPHA{:9}IV-B(W){:10}IV-W(H){:10}IV-B(H){:10}GAMMA/{:18}GAMMA/",
+        "", "", "", "", "", ""
+    );
+    let _ = writeln!(out, "{:78}2*PI*ALPHA*V*R{:9}(2*PI*ALPHA*V*R)T", "", "");
+    let tail = v.tail_interference.is_some();
+    for (k, alpha) in v.alpha.iter().enumerate() {
+        let at =
+            |c: &Option<Vec<Option<f64>>>| c.as_ref().and_then(|c| c.get(k).copied().flatten());
+        // A missing value: its text `pad` columns before the field's right edge.
+        let cell = |value: Option<f64>, missing: &str, width: usize, pad: usize| match value {
+            Some(x) => fortran_e0(x, 4, width),
+            None => format!("{missing:>w$}{:pad$}", "", w = width - pad),
+        };
+        let mut row = fortran_f(*alpha, 3, VORTEX_EDGES[0]);
+        row.push_str(&cell(
+            v.wing_interference.get(k).copied().flatten(),
+            "NDM",
+            17,
+            5,
+        ));
+        row.push_str(&cell(None, if tail { "" } else { "NA" }, 17, 5));
+        let tail_missing = if tail { "NDM" } else { "NA" };
+        row.push_str(&cell(at(&v.tail_interference), tail_missing, 17, 5));
+        row.push_str(&cell(
+            v.wing_strength.get(k).copied().flatten(),
+            "NDM",
+            17,
+            0,
+        ));
+        row.push_str(&cell(at(&v.tail_strength), tail_missing, 25, 3));
+        let _ = writeln!(out, "{}", row.trim_end());
+    }
+}
+
+/// The body-vortex table's rows from the line after its second heading line.
+fn read_vortex_rows(lines: &[&str]) -> Option<VortexJson> {
+    let mut v = VortexJson {
+        alpha: Vec::new(),
+        wing_interference: Vec::new(),
+        wing_strength: Vec::new(),
+        tail_interference: Some(Vec::new()),
+        tail_strength: Some(Vec::new()),
+    };
+    let mut any_tail = false;
+    for l in lines {
+        let cell = |k: usize| {
+            let left = if k == 0 { 0 } else { VORTEX_EDGES[k - 1] };
+            l.get(left..VORTEX_EDGES[k].min(l.len()))
+                .map(str::trim)
+                .and_then(number)
+        };
+        let Some(alpha) = cell(0) else { break };
+        v.alpha.push(alpha);
+        v.wing_interference.push(cell(1));
+        v.wing_strength.push(cell(4));
+        let (ti, ts) = (cell(3), cell(5));
+        any_tail |= ti.is_some() || ts.is_some();
+        v.tail_interference.as_mut()?.push(ti);
+        v.tail_strength.as_mut()?.push(ts);
+    }
+    if !any_tail {
+        v.tail_interference = None;
+        v.tail_strength = None;
+    }
+    (!v.alpha.is_empty()).then_some(v)
 }
 
 fn number(t: &str) -> Option<f64> {
@@ -421,6 +530,8 @@ pub fn read_page(lines: &[&str], into: &mut AuxiliaryJson) {
                     cyp_per_cl: *l,
                 });
             }
+        } else if t0.starts_with("ALPHA") && t0.contains("IV-B(W)") {
+            into.vortices = read_vortex_rows(lines.get(k + 2..).unwrap_or(&[]));
         } else if t0.starts_with("CLB/GAMMA") {
             let w: Vec<&str> = next.split_whitespace().collect();
             let at = |i: usize| w.get(i).and_then(|t| number(t));
