@@ -56,6 +56,9 @@ pub struct Worst {
     pub alpha: f64,
     pub ours: f64,
     pub reference: f64,
+    /// For the PART blocks: the quantity within the block (`planforms[1].exposed.area`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub field: Option<String>,
 }
 
 impl ColumnAgreement {
@@ -75,6 +78,46 @@ const DYNAMIC: [&str; 9] = [
     "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
 ];
 const DOWNWASH: [&str; 3] = ["Q/QINF", "EPSLON", "D(EPSLON)/D(ALPHA)"];
+/// Prefix of the rows of the PART card's blocks (`auxiliary`), one row per block.
+const PART: &str = "PART ";
+
+/// Every number under `v` with its path.
+fn leaves(v: &Value, path: &str, out: &mut Vec<(String, f64)>) {
+    match v {
+        Value::Number(n) => out.extend(n.as_f64().map(|x| (path.to_string(), x))),
+        Value::Array(a) => {
+            for (i, x) in a.iter().enumerate() {
+                leaves(x, &format!("{path}[{i}]"), out);
+            }
+        }
+        Value::Object(o) => {
+            for (k, x) in o {
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                leaves(x, &p, out);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// The number at `path` (as [`leaves`] writes it) under `v`.
+fn at_path<'a>(v: &'a Value, path: &str) -> Option<&'a Value> {
+    let mut cur = v;
+    for part in path.split('.') {
+        let (name, indices) = part.split_once('[').map_or((part, ""), |(n, r)| (n, r));
+        if !name.is_empty() {
+            cur = cur.get(name)?;
+        }
+        for i in indices.split('[').filter(|s| !s.is_empty()) {
+            cur = cur.get(i.trim_end_matches(']').parse::<usize>().ok()?)?;
+        }
+    }
+    Some(cur)
+}
 
 fn numbers(v: &Value) -> Vec<Option<f64>> {
     v.as_array()
@@ -164,10 +207,65 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
                                         alpha: alpha.get(i).copied().flatten().unwrap_or(f64::NAN),
                                         ours: o,
                                         reference: *r,
+                                        field: None,
                                     });
                                 }
                             }
                         }
+                    }
+                }
+            }
+            // The PART blocks: every number of the reference's, one row per block.
+            let Some(aux) = y["auxiliary"].as_object() else {
+                continue;
+            };
+            for (block, value) in aux {
+                let name = format!("{PART}{block}");
+                if !out.iter().any(|c| c.coefficient == name) {
+                    out.push(ColumnAgreement {
+                        coefficient: name.clone(),
+                        compared: 0,
+                        agreeing: 0,
+                        missing: 0,
+                        worst: None,
+                    });
+                }
+                let col = out
+                    .iter_mut()
+                    .find(|c| c.coefficient == name)
+                    .expect("pushed above");
+                let mut numbers = Vec::new();
+                leaves(value, "", &mut numbers);
+                // The angles of the vortex table are its rows' keys, not results.
+                for (path, r) in numbers.into_iter().filter(|(p, _)| !p.starts_with("alpha")) {
+                    let ours =
+                        at_path(&x["auxiliary"][block.as_str()], &path).and_then(Value::as_f64);
+                    let Some(o) = ours else {
+                        col.missing += 1;
+                        continue;
+                    };
+                    col.compared += 1;
+                    if agrees(&name, o, r) {
+                        col.agreeing += 1;
+                    }
+                    let d = (o - r).abs();
+                    if col.worst.as_ref().is_none_or(|w| d > w.difference) {
+                        col.worst = Some(Worst {
+                            difference: d,
+                            case: ci + 1,
+                            condition: ki + 1,
+                            alpha: f64::NAN,
+                            ours: o,
+                            reference: r,
+                            field: Some(format!(
+                                "{block}{}{path}",
+                                if path.starts_with('[') || path.is_empty() {
+                                    ""
+                                } else {
+                                    "."
+                                }
+                            )),
+                        });
                     }
                 }
             }
@@ -188,14 +286,18 @@ pub fn to_text(rows: &[ColumnAgreement]) -> String {
         .unwrap_or(0)
         .max(12);
     let mut s = format!(
-        "{:<w$} agree/total   fraction  missing  worst |ours - reference| (case, condition, alpha: ours vs reference)\n",
+        "{:<w$} agree/total   fraction  missing  worst |ours - reference| (case, condition, alpha or field: ours vs reference)\n",
         "coefficient"
     );
     for r in rows {
         let worst = r.worst.as_ref().map_or(String::new(), |w| {
+            let at = w
+                .field
+                .clone()
+                .unwrap_or_else(|| format!("alpha {}", w.alpha));
             format!(
-                "{:.4e} (case {}, condition {}, alpha {}: {} vs {})",
-                w.difference, w.case, w.condition, w.alpha, w.ours, w.reference
+                "{:.4e} (case {}, condition {}, {at}: {} vs {})",
+                w.difference, w.case, w.condition, w.ours, w.reference
             )
         });
         s.push_str(&format!(
@@ -226,6 +328,22 @@ mod tests {
         assert!(agrees("CM", 0.00015, 0.0001));
         assert!(agrees("CLA", 5.598, 5.6));
         assert!(!agrees("CLA", 5.8, 5.6));
+    }
+
+    #[test]
+    fn part_blocks_are_compared_by_field() {
+        let a: Value = serde_json::from_str(r#"{"cases":[{"conditions":[{"configuration":"W","mach":0.2,"auxiliary":{"body":{"wetted_area":100.0,"base_area":2.0},"planforms":[{"exposed":{"area":10.0}}]}}]}]}"#).unwrap();
+        let b: Value = serde_json::from_str(r#"{"cases":[{"conditions":[{"configuration":"W","mach":0.2,"auxiliary":{"body":{"wetted_area":100.5,"base_area":2.5},"planforms":[{"exposed":{"area":10.0}}],"sidewash":1.0}}]}]}"#).unwrap();
+        let r = compare(&a, &b);
+        let row = |n: &str| r.iter().find(|c| c.coefficient == n).unwrap();
+        assert_eq!(
+            (row("PART body").agreeing, row("PART body").compared),
+            (1, 2)
+        );
+        let worst = row("PART body").worst.as_ref().unwrap();
+        assert_eq!(worst.field.as_deref(), Some("body.base_area"));
+        assert_eq!(row("PART planforms").agreeing, 1);
+        assert_eq!(row("PART sidewash").missing, 1, "not in ours");
     }
 
     #[test]
