@@ -9,16 +9,13 @@
 //! - BASIC PLANFORM PROPERTIES of each surface, theoretical and exposed (DATCOM 2.2.2), with
 //!   the exposed panel's zero-lift drag and skin-friction coefficient (DATCOM 4.1.5.1);
 //! - the wing-body interference line CLA-B(W), CLA-W(B), K-B(W), K-W(B), XAC/C-B(W)
-//!   (DATCOM 4.3.1.2, 4.3.2.2).
-//!
+//!   (DATCOM 4.3.1.2, 4.3.2.2);
 //! - the same line for the horizontal tail and the body, and the vertical tail's sidewash
-//!   factor (DATCOM 5.3.1.1).
-//!
+//!   factor (DATCOM 5.3.1.1);
+//! - the body-vortex table (DATCOM 4.3.1.3) at the wing and the horizontal tail;
 //! - with DAMP, the wing's roll- and yaw-rate increments (DATCOM 7.1.2.1 to 7.1.2.3), its
 //!   Clβ per degree of dihedral (5.1.2.1) and the surfaces' ΔCm0 per degree of twist
 //!   (4.1.4.1).
-//!
-//! - the body-vortex table (DATCOM 4.3.1.3) at the wing and the horizontal tail.
 //!
 //! Not produced yet (docs/output.md): the wing vortices' factor at the tail (IV-W(H)) and the
 //! transonic data-fairing tables.

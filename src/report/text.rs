@@ -164,6 +164,19 @@ pub fn to_string(results: &Results) -> String {
                 let view = super::auxiliary::view(a, case);
                 let (_, _, _, xcg, zcg) = super::reference_view(case);
                 let _ = writeln!(s, "\n{:^120}", "AUXILIARY AND PARTIAL OUTPUT (PART)");
+                {
+                    use crate::case::units::unit_label;
+                    use crate::deck::schema::Dimension as D;
+                    let _ = writeln!(
+                        s,
+                        "{:^120}",
+                        format!(
+                            "lengths in {}, areas in {}, drag on the reference area, lift-curve slopes per degree",
+                            unit_label(case.dim, D::Length),
+                            unit_label(case.dim, D::Area)
+                        )
+                    );
+                }
                 super::auxiliary::basic_properties(&mut s, &view, xcg, zcg);
                 super::auxiliary::interference(&mut s, &view);
             }
