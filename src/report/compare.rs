@@ -379,7 +379,16 @@ mod tests {
             0.0504,
             0.05
         ));
-        assert!(!part_agrees("planforms", "[0].exposed.area", 0.0504, 0.05));
+        assert!(part_agrees(
+            "planforms",
+            "[0].exposed.taper_ratio",
+            0.0495,
+            0.05
+        ));
+        assert!(
+            !part_agrees("planforms", "[0].exposed.area", 0.0515, 0.05),
+            "2 %: E format"
+        );
     }
 
     #[test]
