@@ -373,22 +373,15 @@ mod tests {
         // XCG on the MAC is printed F7.2: 0.0267 prints as 0.03.
         assert!(part_agrees("xcg_behind_mac_leading_edge", "", 0.0267, 0.03));
         assert!(!part_agrees("xcg_behind_mac_leading_edge", "", 0.045, 0.03));
+        // Taper printed F.3: 0.0105 prints as 0.010 (5 % off, one unit); an E-format field
+        // holds 2 %.
         assert!(part_agrees(
             "planforms",
             "[0].exposed.taper_ratio",
-            0.0504,
-            0.05
+            0.0105,
+            0.010
         ));
-        assert!(part_agrees(
-            "planforms",
-            "[0].exposed.taper_ratio",
-            0.0495,
-            0.05
-        ));
-        assert!(
-            !part_agrees("planforms", "[0].exposed.area", 0.0515, 0.05),
-            "2 %: E format"
-        );
+        assert!(!part_agrees("planforms", "[0].exposed.area", 0.0105, 0.010));
     }
 
     #[test]
