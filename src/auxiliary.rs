@@ -17,8 +17,7 @@
 //!   Clβ per degree of dihedral (5.1.2.1) and the surfaces' ΔCm0 per degree of twist
 //!   (4.1.4.1).
 //!
-//! Not produced yet (docs/output.md): the wing vortices' factor at the tail (IV-W(H)) and the
-//! transonic data-fairing tables.
+//! Not produced yet (docs/output.md): the transonic data-fairing tables.
 //!
 //! Values are SI (m, m²) and per radian, as everywhere inside the library; reports convert.
 
@@ -63,12 +62,16 @@ pub struct AuxiliaryOutput {
 
 /// The body-vortex table: per angle of attack, the vortex pair's interference factor and
 /// strength at the wing (IV-B(W), Γ/(2π α V r)) and at the horizontal tail (IV-B(H),
-/// (Γ/(2π α V r))T). The wing tip vortices' factor at the tail, IV-W(H), is not computed.
+/// (Γ/(2π α V r))T), and the interference factor of the wing's tip vortices at the tail
+/// (IV-W(H)).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct VortexTable {
     pub alpha_deg: Vec<f64>,
     pub wing: Vec<VortexAt>,
     pub tail: Option<Vec<VortexAt>>,
+    /// IV-W(H): the interference factor of the wing's tip vortices at the horizontal tail
+    /// (DATCOM 4.4.1, figure 4.4.1-71 for their spanwise station); with a horizontal tail.
+    pub tail_from_wing_vortices: Option<Vec<Option<f64>>>,
 }
 
 /// The body vortex pair at a surface at one angle.
@@ -204,6 +207,9 @@ pub fn auxiliary_output(
             .as_ref()
             .and_then(|t| t.terms.tail_body.as_ref())
             .map(|tb| tb.vortices.iter().map(VortexAt::from).collect()),
+        tail_from_wing_vortices: totals
+            .as_ref()
+            .and_then(|t| tip_vortex_factors(case, index, alpha_deg, t)),
     });
     let sidewash = (case.wing.is_some() && case.body.is_some() && case.vertical_tail.is_some())
         .then(|| {
@@ -253,6 +259,38 @@ pub fn auxiliary_output(
         wing_cm0_per_twist: wing.as_ref().and_then(per_twist),
         tail_cm0_per_twist: tail.as_ref().and_then(|t| per_twist(&t.surface)),
     }
+}
+
+/// IV-W(H) at each angle: the factor i of the wing's tip vortices at the tail (as the canard
+/// method's, which gives it for a canard's vortices at the aft surface; here at the tail's
+/// placement behind the wing).
+fn tip_vortex_factors(
+    case: &Case,
+    index: usize,
+    alpha_deg: &[f64],
+    totals: &crate::methods::tail::ConfigurationTotals,
+) -> Option<Vec<Option<f64>>> {
+    let terms = &totals.terms;
+    let vortex = match &terms.canard {
+        Some(c) => c.vortex.clone(),
+        None => {
+            let tail = terms.horizontal_tail.as_ref()?;
+            let placement = &terms.downwash.as_ref()?.terms.placement;
+            let inputs =
+                crate::methods::tail::vortex_inputs(case, index, &terms.wing_body, tail, placement)
+                    .ok()?;
+            // The factor does not depend on the dynamic pressure at the tail.
+            let q = vec![Some(1.0); alpha_deg.len()];
+            crate::methods::tail::canard_vortex(&inputs, alpha_deg, &q, &mut Vec::new()).ok()?
+        }
+    };
+    Some(
+        vortex
+            .at_angle
+            .iter()
+            .map(|a| a.map(|a| a.interference_factor))
+            .collect(),
+    )
 }
 
 /// The horizontal tail's interference line: K_B(H), K_H(B) at the tail's d/b (DATCOM 4.3.1.2)

@@ -928,7 +928,7 @@ impl<'a> Reader<'a> {
                     n,
                     col,
                     "PART",
-                    "of the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT the body-vortex table's IV-W(H) column and the transonic data fairing are not printed",
+                    "of the original's CONFIGURATION AUXILIARY AND PARTIAL OUTPUT the transonic data fairing and the panel rows of cranked planforms are not printed",
                 );
             }
             Card::Trim => {

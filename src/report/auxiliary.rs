@@ -54,6 +54,9 @@ pub struct VortexJson {
     pub tail_interference: Option<Vec<Option<f64>>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tail_strength: Option<Vec<Option<f64>>>,
+    /// IV-W(H): the wing's tip vortices at the tail.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tail_wing_interference: Option<Vec<Option<f64>>>,
 }
 
 /// CLP(GAMMA=CL=0), CLP(GAMMA)/CLP (GAMMA=0), CNP/THETA, CYP/GAMMA, CYP/CL (CL=0).
@@ -168,6 +171,7 @@ pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
                 wing_strength: strength(&v.wing),
                 tail_interference: v.tail.as_deref().map(interference),
                 tail_strength: v.tail.as_deref().map(strength),
+                tail_wing_interference: v.tail_from_wing_vortices.clone(),
             }
         }),
         roll_increments: a.roll_increments.map(|r| IncrementsJson {
@@ -351,7 +355,7 @@ pub(crate) fn interference(out: &mut String, a: &AuxiliaryJson) {
 const VORTEX_EDGES: [usize; 6] = [22, 39, 56, 73, 90, 115];
 
 /// The body-vortex table. Without a horizontal tail its columns are NA, as the original
-/// prints them; IV-W(H) (not computed) is left blank.
+/// prints them.
 fn vortex_table(out: &mut String, v: &VortexJson) {
     let _ = writeln!(
         out,
@@ -375,7 +379,12 @@ fn vortex_table(out: &mut String, v: &VortexJson) {
             17,
             5,
         ));
-        row.push_str(&cell(None, if tail { "" } else { "NA" }, 17, 5));
+        row.push_str(&cell(
+            at(&v.tail_wing_interference),
+            tail_missing_text(tail),
+            17,
+            5,
+        ));
         let tail_missing = if tail { "NDM" } else { "NA" };
         row.push_str(&cell(at(&v.tail_interference), tail_missing, 17, 5));
         row.push_str(&cell(
@@ -389,6 +398,15 @@ fn vortex_table(out: &mut String, v: &VortexJson) {
     }
 }
 
+/// The text of a missing tail value: NDM with a tail, NA without one.
+fn tail_missing_text(tail: bool) -> &'static str {
+    if tail {
+        "NDM"
+    } else {
+        "NA"
+    }
+}
+
 /// The body-vortex table's rows from the line after its second heading line.
 fn read_vortex_rows(lines: &[&str]) -> Option<VortexJson> {
     let mut v = VortexJson {
@@ -397,6 +415,7 @@ fn read_vortex_rows(lines: &[&str]) -> Option<VortexJson> {
         wing_strength: Vec::new(),
         tail_interference: Some(Vec::new()),
         tail_strength: Some(Vec::new()),
+        tail_wing_interference: Some(Vec::new()),
     };
     let mut any_tail = false;
     for l in lines {
@@ -410,14 +429,16 @@ fn read_vortex_rows(lines: &[&str]) -> Option<VortexJson> {
         v.alpha.push(alpha);
         v.wing_interference.push(cell(1));
         v.wing_strength.push(cell(4));
-        let (ti, ts) = (cell(3), cell(5));
-        any_tail |= ti.is_some() || ts.is_some();
+        let (tw, ti, ts) = (cell(2), cell(3), cell(5));
+        any_tail |= tw.is_some() || ti.is_some() || ts.is_some();
+        v.tail_wing_interference.as_mut()?.push(tw);
         v.tail_interference.as_mut()?.push(ti);
         v.tail_strength.as_mut()?.push(ts);
     }
     if !any_tail {
         v.tail_interference = None;
         v.tail_strength = None;
+        v.tail_wing_interference = None;
     }
     (!v.alpha.is_empty()).then_some(v)
 }

@@ -210,12 +210,42 @@ pub(crate) fn canard(
         reason: format!("wing: {e}"),
     })?;
     let placement = placement_of(case, &geometry, tail);
-    let s = case.synthesis.as_ref();
-    let get = |f: fn(&crate::case::Synthesis) -> Option<f64>| s.and_then(f).unwrap_or(0.0);
-    let (aliw, alih) = (get(|s| s.aliw_deg), get(|s| s.alih_deg));
+    let aliw = case
+        .synthesis
+        .as_ref()
+        .and_then(|s| s.aliw_deg)
+        .unwrap_or(0.0);
     let wing_alpha: Vec<f64> = alpha_deg.iter().map(|a| a + aliw).collect();
     let wakes = wakes_of(wb, &wing_alpha, &placement, warnings);
     let q = dynamic_pressure_ratios(&wakes);
+    let inputs = vortex_inputs(case, condition_index, wb, tail, &placement)?;
+    let vortex = canard_vortex(&inputs, alpha_deg, &q, warnings)?;
+    Ok(Canard {
+        placement,
+        wakes,
+        dynamic_pressure_ratio: q,
+        vortex,
+        moment: Vec::new(),
+    })
+}
+
+/// The inputs of [`canard_vortex`] for the deck's wing ahead of its horizontal tail at
+/// `placement`: a canard and its aft surface, or a conventional wing and tail (whose tip
+/// vortices' factor at the tail the original prints with PART as IV-W(H)).
+pub(crate) fn vortex_inputs(
+    case: &Case,
+    condition_index: usize,
+    wb: &WingBody,
+    tail: &HorizontalTailAlone,
+    placement: &TailPlacement,
+) -> Result<CanardInputs, TailError> {
+    let plan = case.wing.as_ref().ok_or(TailError::NoWing)?;
+    let geometry = planform_geometry(plan, Span::Both).map_err(|e| TailError::Geometry {
+        reason: format!("wing: {e}"),
+    })?;
+    let s = case.synthesis.as_ref();
+    let get = |f: fn(&crate::case::Synthesis) -> Option<f64>| s.and_then(f).unwrap_or(0.0);
+    let (aliw, alih) = (get(|s| s.aliw_deg), get(|s| s.alih_deg));
     let mach =
         case.conditions
             .get(condition_index)
@@ -240,7 +270,7 @@ pub(crate) fn canard(
         .ok_or(TailError::Geometry {
             reason: "the canard (wing) has no lift-curve slope".to_string(),
         })?;
-    let inputs = CanardInputs {
+    Ok(CanardInputs {
         canard_aspect_ratio: geometry.theoretical.aspect_ratio,
         canard_taper: geometry.theoretical.taper,
         canard_tan_leading_edge: geometry.tan_sweep_inboard(0.0),
@@ -264,13 +294,5 @@ pub(crate) fn canard(
         arm: placement.arm,
         height: placement.height,
         reference_area: wb.reference_area,
-    };
-    let vortex = canard_vortex(&inputs, alpha_deg, &q, warnings)?;
-    Ok(Canard {
-        placement,
-        wakes,
-        dynamic_pressure_ratio: q,
-        vortex,
-        moment: Vec::new(),
     })
 }

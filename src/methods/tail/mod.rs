@@ -55,6 +55,7 @@ use crate::methods::body::subsonic_limit;
 use crate::methods::wing::{WingMethodError, WingType, WingWarning};
 use crate::methods::wing_body::{wing_body, WingBody, WingBodyError, WingBodyWarning};
 
+pub(crate) use canard::vortex_inputs;
 pub use canard::{canard_vortex, Canard, CanardInputs, CanardVortex, CanardVortexAtAngle};
 pub use downwash::{
     downwash_gradient_at_tail, downwash_method, effective_aspect_ratio_ratio,
