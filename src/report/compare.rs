@@ -62,6 +62,49 @@ pub struct Worst {
 }
 
 impl ColumnAgreement {
+    fn new(coefficient: &str) -> Self {
+        ColumnAgreement {
+            coefficient: coefficient.to_string(),
+            compared: 0,
+            agreeing: 0,
+            missing: 0,
+            worst: None,
+        }
+    }
+
+    /// Counts one reference number: missing when we have none, else compared (agreeing when
+    /// `agree` says so), keeping the largest difference with its place (case, condition,
+    /// angle, PART field) from `place`.
+    fn count(
+        &mut self,
+        ours: Option<f64>,
+        reference: f64,
+        agree: impl Fn(f64) -> bool,
+        place: impl FnOnce() -> (usize, usize, f64, Option<String>),
+    ) {
+        let Some(o) = ours else {
+            self.missing += 1;
+            return;
+        };
+        self.compared += 1;
+        if agree(o) {
+            self.agreeing += 1;
+        }
+        let d = (o - reference).abs();
+        if self.worst.as_ref().is_none_or(|w| d > w.difference) {
+            let (case, condition, alpha, field) = place();
+            self.worst = Some(Worst {
+                difference: d,
+                case,
+                condition,
+                alpha,
+                ours: o,
+                reference,
+                field,
+            });
+        }
+    }
+
     pub fn fraction(&self) -> f64 {
         if self.compared + self.missing == 0 {
             1.0
@@ -154,13 +197,7 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
         .iter()
         .chain(DYNAMIC.iter())
         .chain(DOWNWASH.iter())
-        .map(|c| ColumnAgreement {
-            coefficient: c.to_string(),
-            compared: 0,
-            agreeing: 0,
-            missing: 0,
-            worst: None,
-        })
+        .map(|c| ColumnAgreement::new(c))
         .collect();
     let empty = Vec::new();
     let cases = |v: &Value| v["cases"].as_array().cloned().unwrap_or_default();
@@ -213,27 +250,13 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
                     let ov = numbers(&x[block][name]);
                     for (i, r) in numbers(&y[block][name]).iter().enumerate() {
                         let Some(r) = r else { continue };
-                        match ov.get(i).copied().flatten() {
-                            None => col.missing += 1,
-                            Some(o) => {
-                                col.compared += 1;
-                                if agrees(name, o, *r) {
-                                    col.agreeing += 1;
-                                }
-                                let d = (o - r).abs();
-                                if col.worst.as_ref().is_none_or(|w| d > w.difference) {
-                                    col.worst = Some(Worst {
-                                        difference: d,
-                                        case: ci + 1,
-                                        condition: ki + 1,
-                                        alpha: alpha.get(i).copied().flatten().unwrap_or(f64::NAN),
-                                        ours: o,
-                                        reference: *r,
-                                        field: None,
-                                    });
-                                }
-                            }
-                        }
+                        let at = alpha.get(i).copied().flatten().unwrap_or(f64::NAN);
+                        col.count(
+                            ov.get(i).copied().flatten(),
+                            *r,
+                            |o| agrees(name, o, *r),
+                            || (ci + 1, ki + 1, at, None),
+                        );
                     }
                 }
             }
@@ -244,13 +267,7 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
             for (block, value) in aux {
                 let name = format!("{PART}{block}");
                 if !out.iter().any(|c| c.coefficient == name) {
-                    out.push(ColumnAgreement {
-                        coefficient: name.clone(),
-                        compared: 0,
-                        agreeing: 0,
-                        missing: 0,
-                        worst: None,
-                    });
+                    out.push(ColumnAgreement::new(&name));
                 }
                 let col = out
                     .iter_mut()
@@ -262,33 +279,24 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
                 for (path, r) in numbers.into_iter().filter(|(p, _)| !p.starts_with("alpha")) {
                     let ours =
                         at_path(&x["auxiliary"][block.as_str()], &path).and_then(Value::as_f64);
-                    let Some(o) = ours else {
-                        col.missing += 1;
-                        continue;
+                    let joint = if path.starts_with('[') || path.is_empty() {
+                        ""
+                    } else {
+                        "."
                     };
-                    col.compared += 1;
-                    if part_agrees(block, &path, o, r) {
-                        col.agreeing += 1;
-                    }
-                    let d = (o - r).abs();
-                    if col.worst.as_ref().is_none_or(|w| d > w.difference) {
-                        col.worst = Some(Worst {
-                            difference: d,
-                            case: ci + 1,
-                            condition: ki + 1,
-                            alpha: f64::NAN,
-                            ours: o,
-                            reference: r,
-                            field: Some(format!(
-                                "{block}{}{path}",
-                                if path.starts_with('[') || path.is_empty() {
-                                    ""
-                                } else {
-                                    "."
-                                }
-                            )),
-                        });
-                    }
+                    col.count(
+                        ours,
+                        r,
+                        |o| part_agrees(block, &path, o, r),
+                        || {
+                            (
+                                ci + 1,
+                                ki + 1,
+                                f64::NAN,
+                                Some(format!("{block}{joint}{path}")),
+                            )
+                        },
+                    );
                 }
             }
         }
