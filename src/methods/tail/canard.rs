@@ -229,6 +229,26 @@ pub(crate) fn canard(
     })
 }
 
+/// The leading-edge sweep (tangent) figure 4.4.1-71 is read at: a straight-tapered planform's
+/// own; for two panels, the arc cosine of the panels' cosines weighted by their exposed areas
+/// (the figure is for straight-tapered wings; this is the original's equivalent sweep, its
+/// A(38)), with the sign of the area-weighted tangent.
+fn effective_tan_leading_edge(g: &crate::geometry::PlanformGeometry) -> f64 {
+    let tan_in = g.tan_sweep_inboard(0.0);
+    let Some(outboard) = g.outboard else {
+        return tan_in;
+    };
+    let tan_out = g.tan_sweep_outboard(0.0);
+    let (a_in, a_out) = (g.inboard_exposed.area, outboard.area);
+    let total = a_in + a_out;
+    if total.is_nan() || total <= 0.0 {
+        return tan_in;
+    }
+    let cos = (a_in * tan_in.atan().cos() + a_out * tan_out.atan().cos()) / total;
+    let sign = (a_in * tan_in + a_out * tan_out).signum();
+    sign * cos.clamp(0.0, 1.0).acos().tan()
+}
+
 /// The inputs of [`canard_vortex`] for the deck's wing ahead of its horizontal tail at
 /// `placement`: a canard and its aft surface, or a conventional wing and tail (whose tip
 /// vortices' factor at the tail the original prints with PART as IV-W(H)).
@@ -273,7 +293,7 @@ pub(crate) fn vortex_inputs(
     Ok(CanardInputs {
         canard_aspect_ratio: geometry.theoretical.aspect_ratio,
         canard_taper: geometry.theoretical.taper,
-        canard_tan_leading_edge: geometry.tan_sweep_inboard(0.0),
+        canard_tan_leading_edge: effective_tan_leading_edge(&geometry),
         canard_tan_trailing_edge: geometry.tan_sweep_inboard(1.0),
         canard_semispan: p.semispan,
         canard_exposed_semispan: p.exposed_semispan,
