@@ -316,3 +316,39 @@ pub(crate) fn vortex_inputs(
         reference_area: wb.reference_area,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::effective_tan_leading_edge;
+    use crate::geometry::{planform, Span};
+
+    /// Tolerance: the original's A(38) printed with six digits by an instrumented build.
+    const PRINTED: f64 = 5e-6;
+
+    fn wing(card: &str) -> crate::geometry::PlanformGeometry {
+        let deck = crate::read_deck(
+            &format!(" $FLTCON NMACH=1.0, MACH(1)=0.2$\n $SYNTHS XCG=1.0$\n{card}\n"),
+            "t.dcm",
+        );
+        let plan = deck.cases[0].wing.clone().expect("a wing");
+        planform(&plan, Span::Both).expect("a planform")
+    }
+
+    #[test]
+    fn straight_wing_keeps_its_leading_edge() {
+        let g = wing(" $WGPLNF CHRDR=2.0, CHRDTP=1.0, SSPN=5.0, SSPNE=4.5, SAVSI=30.0, CHSTAT=0.0, TYPE=1.0$");
+        assert!(g.outboard.is_none());
+        assert_eq!(effective_tan_leading_edge(&g), g.tan_sweep_inboard(0.0));
+    }
+
+    #[test]
+    fn two_panels_take_the_equivalent_sweep_of_the_original() {
+        // arktools__datcom2modelica_shadowmaster_echo's wing (feet): an unswept inboard panel
+        // and a 39.52° outboard panel; the instrumented original's A(38) is 0.143153.
+        let g = wing(
+            " $WGPLNF CHRDBP=4.881,CHRDTP=3.959,SSPNE=19.886,SSPN=22.601,SSPNOP=0.965,\n  CHRDR=4.881, SAVSO=39.52,TWISTA=0.0, CHSTAT=0.0, DHDADI=0.0,TYPE=1.0$",
+        );
+        assert_eq!(g.tan_sweep_inboard(0.0), 0.0);
+        assert!((effective_tan_leading_edge(&g) - 0.143153).abs() < PRINTED);
+    }
+}
