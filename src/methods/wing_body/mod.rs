@@ -283,7 +283,10 @@ pub fn wing_body_with_section(
     // Lift.
     let factors = interference_factors(body_width / span, &mut warnings)?;
     let body_radius = (shape.max_area / std::f64::consts::PI).sqrt();
-    let x_quarter_chord = xw + geometry.x_mac_le + geometry.theoretical.mac / 4.0;
+    // From the body's nose, its first station (figure 4.3.1.3-13a's x; the original measures
+    // positions from the nose internally).
+    let nose = shape.x.first().copied().unwrap_or(0.0);
+    let x_quarter_chord = xw + geometry.x_mac_le + geometry.theoretical.mac / 4.0 - nose;
     let vortices = alpha_deg
         .iter()
         .map(|&a| {
