@@ -304,31 +304,14 @@ fn tail_body_line(
     use crate::methods::wing_body::{carry_over_centre, Auxiliary, CarryOverInputs};
     let factors = &totals.terms.tail_body.as_ref()?.interference;
     let tail = totals.terms.horizontal_tail.as_ref()?;
-    let p = &tail.surface.terms.planform;
     let mach = case.conditions.get(index)?.mach;
+    let beta = (1.0 - mach * mach).abs().sqrt();
     let centre = carry_over_centre(
-        &CarryOverInputs {
-            exposed_aspect_ratio: p.aspect_ratio,
-            exposed_taper: p.taper,
-            exposed_root_chord: p.exposed_root_chord,
-            tan_leading_edge: p.leading_edge.tan,
-            tan_quarter_chord: p.quarter_chord.tan,
-            span: 2.0 * p.semispan,
-            body_width: 2.0 * (p.semispan - p.exposed_semispan),
-            beta: (1.0 - mach * mach).abs().sqrt(),
-            reference_length: totals.reference_length,
-        },
+        &CarryOverInputs::of_planform(&tail.surface.terms.planform, beta, totals.reference_length),
         &mut Vec::new(),
     )
     .ok()?;
-    let slope = tail.slope_per_rad;
-    Some(Auxiliary {
-        body_in_presence_of_wing_slope_per_rad: factors.body_in_presence_of_wing * slope,
-        wing_in_presence_of_body_slope_per_rad: factors.wing_in_presence_of_body * slope,
-        body_in_presence_of_wing: factors.body_in_presence_of_wing,
-        wing_in_presence_of_body: factors.wing_in_presence_of_body,
-        carry_over_centre: centre.over_reference_length,
-    })
+    Some(Auxiliary::of(factors, tail.slope_per_rad, &centre))
 }
 
 /// Sweep of the quarter chord over a two-panel planform: the arc cosine of the panels' cosines

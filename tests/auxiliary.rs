@@ -16,9 +16,11 @@ use std::collections::BTreeMap;
 
 /// The agreement rule: within 2 % or one unit in the last printed digit.
 const RELATIVE: f64 = 0.02;
-/// Bar for each kind of record: every subsonic number of the oracle's PART pages but the
-/// misses explained in docs/output.md.
+/// Bar for each kind of record: the 95 %.
 const BAR: f64 = 0.95;
+/// Misses in all, at most: the three exposed zero-lift drags at Mach 0.036 to 0.059 that
+/// docs/output.md explains (the R_LS reading); any other is a regression.
+const EXPLAINED_MISSES: usize = 3;
 
 /// Records of one case's listing: key (condition line, occurrence, record) → printed tokens.
 fn records(listing: &str) -> BTreeMap<(String, usize, String), Vec<String>> {
@@ -234,6 +236,11 @@ fn part_pages_agree_with_the_original() {
     for (kind, (m, n)) in &tally {
         assert!(*m as f64 >= BAR * *n as f64, "{kind}: {m} / {n}");
     }
+    assert!(
+        total - matched <= EXPLAINED_MISSES,
+        "{} misses, {EXPLAINED_MISSES} explained",
+        total - matched
+    );
 }
 
 /// With BUILD the component pages come first; only the case's own configuration carries the

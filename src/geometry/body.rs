@@ -33,7 +33,7 @@ pub enum BodyError {
 /// A body's stations completed and its derived quantities, SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BodyGeometry {
-    /// Stations from the nose, m.
+    /// Stations along the deck's x axis, m: the nose is the first, not necessarily at 0.
     pub x: Vec<f64>,
     /// Cross-section areas, m².
     pub s: Vec<f64>,
@@ -59,6 +59,14 @@ pub struct BodyGeometry {
     pub volume: f64,
     /// Planform area: twice the integral of the equivalent radius, m².
     pub planform_area: f64,
+}
+
+impl BodyGeometry {
+    /// x of the nose (the first station), m: the origin of the stations the methods measure
+    /// from the nose, as the original does internally.
+    pub fn nose(&self) -> f64 {
+        self.x.first().copied().unwrap_or(0.0)
+    }
 }
 
 /// `f` at `at`, linear between stations and clamped beyond the ends.

@@ -230,23 +230,16 @@ pub(crate) fn canard(
 }
 
 /// The leading-edge sweep (tangent) figure 4.4.1-71 is read at: a straight-tapered planform's
-/// own; for two panels, the arc cosine of the panels' cosines weighted by their exposed areas
-/// (the figure is for straight-tapered wings; this is the original's equivalent sweep, its
-/// A(38)), with the sign of the area-weighted tangent.
+/// own; for two panels the planform's sweep ([`PlanformGeometry::sweep_deg`]: the arc cosine
+/// of the panels' cosines weighted by their exposed areas, the original's A(38)), since the
+/// figure is for straight-tapered wings.
+///
+/// [`PlanformGeometry::sweep_deg`]: crate::geometry::PlanformGeometry::sweep_deg
 fn effective_tan_leading_edge(g: &crate::geometry::PlanformGeometry) -> f64 {
-    let tan_in = g.tan_sweep_inboard(0.0);
-    let Some(outboard) = g.outboard else {
-        return tan_in;
-    };
-    let tan_out = g.tan_sweep_outboard(0.0);
-    let (a_in, a_out) = (g.inboard_exposed.area, outboard.area);
-    let total = a_in + a_out;
-    if total.is_nan() || total <= 0.0 {
-        return tan_in;
+    match g.outboard {
+        None => g.tan_sweep_inboard(0.0),
+        Some(_) => g.sweep_deg(0.0).to_radians().tan(),
     }
-    let cos = (a_in * tan_in.atan().cos() + a_out * tan_out.atan().cos()) / total;
-    let sign = (a_in * tan_in + a_out * tan_out).signum();
-    sign * cos.clamp(0.0, 1.0).acos().tan()
 }
 
 /// The inputs of [`canard_vortex`] for the deck's wing ahead of its horizontal tail at

@@ -527,7 +527,7 @@ fn wing_body_horizontal_tail(
         height,
         // From the body's nose (its first station), as for the wing.
         x_quarter_chord: xh + tail_geometry.x_mac_le + tail_geometry.theoretical.mac / 4.0
-            - shape.x.first().copied().unwrap_or(0.0),
+            - shape.nose(),
         body_radius: (shape.max_area / std::f64::consts::PI).sqrt(),
         semispan: tp.semispan,
         exposed_taper: tp.taper,
@@ -621,8 +621,8 @@ fn wing_body_horizontal_tail(
                 wing_moment.aerodynamic_centre * wb.terms.wing.terms.planform.exposed_root_chord;
             let (si_w, ci_w) = aliw.to_radians().sin_cos();
             // XW from the body's nose (its first station), as the original measures it.
-            let xw_nose = xw - shape.x.first().copied().unwrap_or(0.0);
-            let wing_height = (zw - xw_nose * si_w / ci_w - wing_ac * si_w - zcg) / c_ref;
+            let wing_height =
+                (zw - (xw - shape.nose()) * si_w / ci_w - wing_ac * si_w - zcg) / c_ref;
             let (s, c) = alpha_rad[0].sin_cos();
             let wing_body_moment = cma_wb / cla_wb * ((-cl_wb + dcd) * s + (cla_wb + cd_wb) * c)
                 - wing_height * ((cla_wb + cd_wb) * s + (cl_wb - dcd) * c);

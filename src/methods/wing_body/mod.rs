@@ -170,6 +170,22 @@ pub struct Auxiliary {
     pub carry_over_centre: f64,
 }
 
+impl Auxiliary {
+    /// The line of a surface with lift-curve slope `slope_per_rad` (on the reference area) on
+    /// the body: its interference factors and the centre of its carry-over lift.
+    pub fn of(factors: &InterferenceFactors, slope_per_rad: f64, centre: &CarryOverCentre) -> Self {
+        Auxiliary {
+            body_in_presence_of_wing_slope_per_rad: factors.body_in_presence_of_wing
+                * slope_per_rad,
+            wing_in_presence_of_body_slope_per_rad: factors.wing_in_presence_of_body
+                * slope_per_rad,
+            body_in_presence_of_wing: factors.body_in_presence_of_wing,
+            wing_in_presence_of_body: factors.wing_in_presence_of_body,
+            carry_over_centre: centre.over_reference_length,
+        }
+    }
+}
+
 /// The named terms behind the coefficients.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct WingBodyTerms {
@@ -285,8 +301,7 @@ pub fn wing_body_with_section(
     let body_radius = (shape.max_area / std::f64::consts::PI).sqrt();
     // From the body's nose, its first station (figure 4.3.1.3-13a's x; the original measures
     // positions from the nose internally).
-    let nose = shape.x.first().copied().unwrap_or(0.0);
-    let x_quarter_chord = xw + geometry.x_mac_le + geometry.theoretical.mac / 4.0 - nose;
+    let x_quarter_chord = xw + geometry.x_mac_le + geometry.theoretical.mac / 4.0 - shape.nose();
     let vortices = alpha_deg
         .iter()
         .map(|&a| {
@@ -334,17 +349,7 @@ pub fn wing_body_with_section(
             * p.inboard.leading_edge.tan
             * incidence_deg.to_radians().cos();
     let centre = carry_over_centre(
-        &CarryOverInputs {
-            exposed_aspect_ratio: p.aspect_ratio,
-            exposed_taper: p.taper,
-            exposed_root_chord: p.exposed_root_chord,
-            tan_leading_edge: p.leading_edge.tan,
-            tan_quarter_chord: p.quarter_chord.tan,
-            span,
-            body_width,
-            beta,
-            reference_length,
-        },
+        &CarryOverInputs::of_planform(p, beta, reference_length),
         &mut warnings,
     )?;
     let cm0 = wing.terms.pitching_moment.as_ref().map(|m| m.zero_lift.cm0);
@@ -430,13 +435,7 @@ pub fn wing_body_with_section(
     // The page.
     let crate::numeric::BodyAxes { cn, ca, xcp } =
         crate::numeric::body_axes(&alpha_rad, &cl, &cd, &cm);
-    let auxiliary = Auxiliary {
-        body_in_presence_of_wing_slope_per_rad: factors.body_in_presence_of_wing * slope,
-        wing_in_presence_of_body_slope_per_rad: factors.wing_in_presence_of_body * slope,
-        body_in_presence_of_wing: factors.body_in_presence_of_wing,
-        wing_in_presence_of_body: factors.wing_in_presence_of_body,
-        carry_over_centre: centre.over_reference_length,
-    };
+    let auxiliary = Auxiliary::of(&factors, slope, &centre);
     Ok(WingBody {
         reference_area,
         reference_length,

@@ -49,6 +49,29 @@ pub struct CarryOverInputs {
     pub reference_length: f64,
 }
 
+impl CarryOverInputs {
+    /// The inputs of a surface (wing, or horizontal tail on the body) from its planform terms
+    /// `p`: its exposed panel, span 2 b′/2 and body width 2 (b′/2 − b′e/2), at `beta`, on the
+    /// reference length `reference_length`.
+    pub fn of_planform(
+        p: &crate::methods::wing::WingPlanform,
+        beta: f64,
+        reference_length: f64,
+    ) -> CarryOverInputs {
+        CarryOverInputs {
+            exposed_aspect_ratio: p.aspect_ratio,
+            exposed_taper: p.taper,
+            exposed_root_chord: p.exposed_root_chord,
+            tan_leading_edge: p.leading_edge.tan,
+            tan_quarter_chord: p.quarter_chord.tan,
+            span: 2.0 * p.semispan,
+            body_width: 2.0 * (p.semispan - p.exposed_semispan),
+            beta,
+            reference_length,
+        }
+    }
+}
+
 /// DATCOM 4.3.2.2, figures 4.3.2.2-35 (βA_e ≥ 4) and -36b (βA_e = 0): the aerodynamic centre
 /// of the lift carried over onto the body, behind the exposed root's leading edge. Between
 /// βA_e = 0 and 4 the original fairs the quarter ellipse
