@@ -322,3 +322,26 @@ fn angles_of_attack_out_of_order_in_a_deck_are_located_and_put_in_order() {
         .iter()
         .any(|w| w.contains("do not increase")));
 }
+
+#[test]
+fn a_fin_without_body_depth_warns_once_without_quoting_the_largest_float() {
+    // The bundled UAV with the vertical tail's exposed semispan equal to its semispan: the
+    // figures of b_v/2r₁ are held at their last nodes, which one warning says; the chart
+    // lookups used to add "span_over_body_depth = 179769313486231570000…".
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("namelists/example-uav.dcm")).unwrap();
+    let text = text.replace("SSPN=0.28, SSPNE=0.24", "SSPN=0.28, SSPNE=0.28");
+    assert!(text.contains("SSPNE=0.28"), "the bundled deck changed");
+    let r = datcom::run(&read(&text));
+    let warnings: Vec<String> = r.cases.iter().flat_map(|c| c.warnings.clone()).collect();
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.contains("SSPNE is not below its SSPN")),
+        "{warnings:#?}"
+    );
+    assert!(
+        !warnings.iter().any(|w| w.contains("span_over_body_depth")),
+        "{warnings:#?}"
+    );
+}

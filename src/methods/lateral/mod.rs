@@ -92,7 +92,7 @@ pub enum LateralWarning {
     /// The exposed semispan equals the semispan (no body width at the wing root): the wing
     /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
     NoBodyWidthAtWing,
-    /// The vertical panel's exposed span equals its span (no body depth at the panel): the
+    /// The vertical panel's exposed span is not below its span (no body depth at the panel): the
     /// charts of b_v/2r₁ are held at their last nodes (the isolated panel).
     NoBodyAtFin,
 }
@@ -110,7 +110,7 @@ impl fmt::Display for LateralWarning {
             }
             LateralWarning::NoBodyAtFin => write!(
                 f,
-                "the vertical panel's SSPNE equals its SSPN (no body depth at the panel): \
+                "the vertical panel's SSPNE is not below its SSPN (no body depth at the panel): \
                  figures 5.3.1.1-22a and -22d are held at their last nodes"
             ),
             LateralWarning::NoBodyWidthAtWing => write!(

@@ -237,16 +237,23 @@ pub fn fin_lateral(
     };
     let root = plan.chrdr.unwrap_or(0.0);
     let taper = plan.chrdtp.unwrap_or(0.0) / root;
+    let mut body_chart_warnings = Vec::new();
     let body_aspect_ratio_factor = read(
         figures::FIN_ASPECT_IN_BODY,
         &[taper, span_over_body_depth],
-        &mut warnings,
+        &mut body_chart_warnings,
     )?;
     let k = read(
         figures::FIN_SIDE_FORCE_K,
         &[span_over_body_depth],
-        &mut warnings,
+        &mut body_chart_warnings,
     )?;
+    // Without body depth the ratio is unbounded: NoBodyAtFin says the charts are held at their
+    // last nodes, and a chart warning quoting f64::MAX would say nothing more.
+    let unbounded = body_depth_span <= 0.0;
+    warnings.extend(body_chart_warnings.into_iter().filter(|w| {
+        !(unbounded && matches!(w, LateralWarning::Chart(c) if c.value == span_over_body_depth))
+    }));
 
     // End plate of the horizontal tail (vertical tail only).
     let mut tail_aspect_ratio_factor = None;
