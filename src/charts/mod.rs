@@ -213,8 +213,47 @@ impl fmt::Display for ChartWarning {
         write!(
             f,
             "chart {}: {} = {} is outside the data ({} to {}): {what}",
-            self.chart, self.variable, self.value, self.min, self.max
+            self.chart,
+            self.variable,
+            Query(self.value),
+            self.min,
+            self.max
         )
+    }
+}
+
+/// Significant digits of a query value in a warning: more than a chart is read to, fewer than
+/// a float's seventeen (`tan_ratio = 0.10533802696765625` is shown as `0.1053`).
+const QUERY_DIGITS: i32 = 4;
+
+/// A query value as a person reads it: rounded to [`QUERY_DIGITS`] significant digits, plain
+/// between 1e-4 and 1e6, in exponent form beyond (the warning's `value` keeps it exactly).
+struct Query(f64);
+
+impl fmt::Display for Query {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        if v == 0.0 || !v.is_finite() {
+            return write!(f, "{v}");
+        }
+        let exponent = v.abs().log10().floor() as i32;
+        let keep = QUERY_DIGITS - 1 - exponent;
+        // Integers scaled by exact powers of ten: the quotient or product is the double
+        // nearest the rounded decimal, which prints in its short form.
+        let rounded = if keep >= 0 {
+            let s = 10f64.powi(keep);
+            (v * s).round() / s
+        } else {
+            let s = 10f64.powi(-keep);
+            (v / s).round() * s
+        };
+        let digits = (QUERY_DIGITS - 1) as usize;
+        match ((-4..6).contains(&exponent), rounded.is_finite()) {
+            (true, true) => write!(f, "{rounded}"),
+            (false, true) => write!(f, "{rounded:e}"),
+            // Rounded up beyond the largest float.
+            (_, false) => write!(f, "{v:.digits$e}"),
+        }
     }
 }
 
@@ -331,4 +370,24 @@ pub fn all() -> impl Iterator<Item = &'static Chart> {
 /// Embedded chart files that failed to parse or validate (a test keeps this empty).
 pub fn invalid() -> &'static [(String, ChartError)] {
     &registry().errors
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Query;
+
+    #[test]
+    fn query_values_are_shown_to_four_significant_digits() {
+        let shown = |v: f64| Query(v).to_string();
+        assert_eq!(shown(0.10533802696765625), "0.1053");
+        assert_eq!(shown(0.058722834612423405), "0.05872");
+        assert_eq!(shown(8.000000000000007), "8");
+        assert_eq!(shown(-3.168976464449363), "-3.169");
+        assert_eq!(shown(205_220.4), "205200");
+        assert_eq!(shown(0.0), "0");
+        assert_eq!(shown(1.23456e-7), "1.235e-7");
+        assert_eq!(shown(1.2345678e10), "1.235e10");
+        assert_eq!(shown(f64::MAX), "1.798e308");
+        assert_eq!(shown(f64::INFINITY), "inf");
+    }
 }
