@@ -1,6 +1,7 @@
 //! Small numerical rules shared by the methods: the trapezoidal integral and the slopes of a
 //! curve given at its nodes, as the original program takes them (routines TRAPZ and TBFUNX's
-//! derivative from the parabola through three nodes).
+//! derivative from the parabola through three nodes); and how a number is rounded for a
+//! person to read.
 
 /// Trapezoidal integral of `f` over `x`.
 pub fn trapezoid(x: &[f64], f: &[f64]) -> f64 {
@@ -52,6 +53,18 @@ pub fn curve_slopes(alpha_rad: &[f64], f: &[Option<f64>]) -> Vec<Option<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rounding_to_significant_digits_is_the_decimal_rounding_of_the_exact_value() {
+        // 2.3375 is stored a little below itself: its four digits are 2.337, where scaling by
+        // 1000 and rounding would give 2.338.
+        assert!(format!("{:.20}", 2.3375_f64).starts_with("2.33749"));
+        assert_eq!(round_significant(2.3375, 4), Some(2.337));
+        assert_eq!(round_significant(0.10533802696765625, 4), Some(0.1053));
+        assert_eq!(round_significant(123.456789, 8), Some(123.45679));
+        assert_eq!(round_significant(f64::MAX, 4), None);
+        assert_eq!(round_significant(f64::NAN, 4), None);
+    }
 
     /// At 0° the body axes are the wind axes; at 90° lift is axial (negative) and drag normal;
     /// CN = 0 gives no centre of pressure; a missing CL or CD gives no CN or CA.
@@ -137,4 +150,12 @@ pub fn body_axes(
 /// The values that are finite; the others become none.
 pub fn finite_only(v: Vec<Option<f64>>) -> Vec<Option<f64>> {
     v.into_iter().map(|x| x.filter(|y| y.is_finite())).collect()
+}
+
+/// `v` rounded to `digits` significant decimal digits (the decimal rounding of its exact value,
+/// as `{:e}` formatting with that precision gives it); none when the rounding leaves the finite
+/// numbers (or `v` is not finite).
+pub fn round_significant(v: f64, digits: usize) -> Option<f64> {
+    let r: f64 = format!("{v:.*e}", digits.saturating_sub(1)).parse().ok()?;
+    r.is_finite().then_some(r)
 }

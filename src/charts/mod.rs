@@ -224,10 +224,10 @@ impl fmt::Display for ChartWarning {
 
 /// Significant digits of a query value in a warning: more than a chart is read to, fewer than
 /// a float's seventeen (`tan_ratio = 0.10533802696765625` is shown as `0.1053`).
-const QUERY_DIGITS: i32 = 4;
+const QUERY_DIGITS: usize = 4;
 
 /// A query value as a person reads it: rounded to [`QUERY_DIGITS`] significant digits, plain
-/// between 1e-4 and 1e6, in exponent form beyond (the warning's `value` keeps it exactly).
+/// from 1e-4 to below 1e6, in exponent form beyond (the warning's `value` keeps it exactly).
 struct Query(f64);
 
 impl fmt::Display for Query {
@@ -236,23 +236,11 @@ impl fmt::Display for Query {
         if v == 0.0 || !v.is_finite() {
             return write!(f, "{v}");
         }
-        let exponent = v.abs().log10().floor() as i32;
-        let keep = QUERY_DIGITS - 1 - exponent;
-        // Integers scaled by exact powers of ten: the quotient or product is the double
-        // nearest the rounded decimal, which prints in its short form.
-        let rounded = if keep >= 0 {
-            let s = 10f64.powi(keep);
-            (v * s).round() / s
-        } else {
-            let s = 10f64.powi(-keep);
-            (v / s).round() * s
-        };
-        let digits = (QUERY_DIGITS - 1) as usize;
-        match ((-4..6).contains(&exponent), rounded.is_finite()) {
-            (true, true) => write!(f, "{rounded}"),
-            (false, true) => write!(f, "{rounded:e}"),
+        match crate::numeric::round_significant(v, QUERY_DIGITS) {
+            Some(r) if (1e-4..1e6).contains(&r.abs()) => write!(f, "{r}"),
+            Some(r) => write!(f, "{r:e}"),
             // Rounded up beyond the largest float.
-            (_, false) => write!(f, "{v:.digits$e}"),
+            None => write!(f, "{v:.*e}", QUERY_DIGITS - 1),
         }
     }
 }

@@ -587,7 +587,7 @@ pub fn model(deck: &str, results: &CaseResults) -> Result<AeroModel, ExportError
 /// Only finite numbers reach here.
 fn num(v: f64) -> String {
     debug_assert!(v.is_finite());
-    let r: f64 = format!("{v:.7e}").parse().unwrap_or(v);
+    let r = crate::numeric::round_significant(v, 8).unwrap_or(v);
     if r == 0.0 {
         "0".to_string()
     } else if (1e-4..1e7).contains(&r.abs()) {
