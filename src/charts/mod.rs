@@ -236,11 +236,97 @@ impl fmt::Display for Query {
         if v == 0.0 || !v.is_finite() {
             return write!(f, "{v}");
         }
+        match Query::digits(v) {
+            Some((digits, exponent)) => Query::write_digits(f, v < 0.0, digits, exponent),
+            None => Query::exact(f, v),
+        }
+    }
+}
+
+impl Query {
+    /// The query rounded by the decimal rounding of its exact value (a float formatting in
+    /// exact mode), written as the float nearest that rounding is shown.
+    fn exact(f: &mut fmt::Formatter<'_>, v: f64) -> fmt::Result {
         match crate::numeric::round_significant(v, QUERY_DIGITS) {
             Some(r) if (1e-4..1e6).contains(&r.abs()) => write!(f, "{r}"),
             Some(r) => write!(f, "{r:e}"),
             // Rounded up beyond the largest float.
             None => write!(f, "{v:.*e}", QUERY_DIGITS - 1),
+        }
+    }
+
+    /// The [`QUERY_DIGITS`] significant digits of `v` (finite, not 0) as an integer `m` of
+    /// exactly that many digits and the decimal exponent `e` of the first (|v| rounds to
+    /// m·10^(e+1−QUERY_DIGITS)), by arithmetic; none where the arithmetic's few units of
+    /// rounding error could decide the rounding (a near tie, a near power of ten, the ends of
+    /// the float range): [`Query::exact`] decides those.
+    fn digits(v: f64) -> Option<(u32, i32)> {
+        /// Distance from a rounding boundary below which the arithmetic is not trusted: far
+        /// above its error (a few units in the last place of a number below 10^4).
+        const MARGIN: f64 = 1e-6;
+        let low = 10f64.powi(QUERY_DIGITS as i32 - 1);
+        let a = v.abs();
+        if !(1e-290..1e290).contains(&a) {
+            return None;
+        }
+        let e = a.log10().floor() as i32;
+        let shift = QUERY_DIGITS as i32 - 1 - e;
+        let scaled = if shift >= 0 {
+            a * 10f64.powi(shift)
+        } else {
+            a / 10f64.powi(-shift)
+        };
+        let fraction = scaled - scaled.floor();
+        let near_tie = (fraction - 0.5).abs() < MARGIN;
+        if near_tie || !(low + MARGIN..10.0 * low - 0.5 - MARGIN).contains(&scaled) {
+            return None;
+        }
+        Some((scaled.round() as u32, e))
+    }
+
+    /// Writes `digits`·10^(exponent+1−QUERY_DIGITS) as Rust shows the float nearest it: plain
+    /// from 1e-4 to below 1e6, else in exponent form, with the shortest digits (those given,
+    /// trailing zeros dropped).
+    fn write_digits(
+        f: &mut fmt::Formatter<'_>,
+        negative: bool,
+        mut digits: u32,
+        exponent: i32,
+    ) -> fmt::Result {
+        let mut count = QUERY_DIGITS as i32;
+        while digits % 10 == 0 {
+            digits /= 10;
+            count -= 1;
+        }
+        let text = digits.to_string();
+        if negative {
+            f.write_str("-")?;
+        }
+        if !(-4..6).contains(&exponent) {
+            let (first, rest) = text.split_at(1);
+            f.write_str(first)?;
+            if !rest.is_empty() {
+                write!(f, ".{rest}")?;
+            }
+            return write!(f, "e{exponent}");
+        }
+        if exponent < 0 {
+            f.write_str("0.")?;
+            for _ in 0..(-exponent - 1) {
+                f.write_str("0")?;
+            }
+            return f.write_str(&text);
+        }
+        let whole = (exponent + 1) as usize;
+        if (count as usize) <= whole {
+            f.write_str(&text)?;
+            for _ in 0..whole - count as usize {
+                f.write_str("0")?;
+            }
+            Ok(())
+        } else {
+            let (int, frac) = text.split_at(whole);
+            write!(f, "{int}.{frac}")
         }
     }
 }
@@ -377,5 +463,42 @@ mod tests {
         assert_eq!(shown(1.2345678e10), "1.235e10");
         assert_eq!(shown(f64::MAX), "1.798e308");
         assert_eq!(shown(f64::INFINITY), "inf");
+    }
+
+    /// The arithmetic rounding writes what the exact decimal rounding writes, wherever it
+    /// answers (ties and the ends of the range are left to the exact one).
+    #[test]
+    fn the_arithmetic_rounding_agrees_with_the_exact_one() {
+        struct Exact(f64);
+        impl std::fmt::Display for Exact {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                Query::exact(f, self.0)
+            }
+        }
+        // A deterministic spread over many decades, every sign, and decimal ties.
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut values = vec![
+            2.3375, 0.12345, 999.95, 9999.5, 1e6, 999_999.7, 1e-4, 9.9995e-5,
+        ];
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let mantissa = (x >> 11) as f64 / (1u64 << 53) as f64;
+            let decade = (x % 40) as i32 - 20;
+            let sign = if x & 1 == 0 { 1.0 } else { -1.0 };
+            values.push(sign * (1.0 + 9.0 * mantissa) * 10f64.powi(decade));
+        }
+        let mut answered = 0;
+        for v in values {
+            if Query::digits(v).is_some() {
+                answered += 1;
+            }
+            assert_eq!(Query(v).to_string(), Exact(v).to_string(), "{v:e}");
+        }
+        assert!(
+            answered > 190_000,
+            "the arithmetic answers almost always: {answered}"
+        );
     }
 }
