@@ -796,6 +796,73 @@ const ATMOSPHERE_RANGE_M: (f64, f64) = (-5000.0, 700_000.0);
 const MACH_RANGE: (f64, f64) = (0.0, 100.0);
 
 impl Case {
+    /// A copy of the case with `sections` in place of its section inputs: what a method that
+    /// applies the wing methods to another surface, or to the wing under other inputs, runs
+    /// on (the other surfaces' inputs are not copied).
+    pub(crate) fn with_sections(&self, sections: BTreeMap<String, SectionInput>) -> Case {
+        // Every field named, so that a new field is copied here too.
+        let Case {
+            number,
+            first_line,
+            caseid,
+            dim,
+            scale,
+            deriv,
+            section_reynolds,
+            five_digit,
+            section_maximum,
+            six_a,
+            zero_lift,
+            cards,
+            flight,
+            reference,
+            synthesis,
+            body,
+            wing,
+            horizontal_tail,
+            vertical_tail,
+            ventral_fin,
+            twin_panels,
+            sections: _,
+            larwb,
+            conditions,
+            condition_warnings,
+            airfoils,
+            other,
+            save,
+        } = self;
+        Case {
+            number: *number,
+            first_line: *first_line,
+            caseid: caseid.clone(),
+            dim: *dim,
+            scale: *scale,
+            deriv: *deriv,
+            section_reynolds: *section_reynolds,
+            five_digit: *five_digit,
+            section_maximum: *section_maximum,
+            six_a: *six_a,
+            zero_lift: *zero_lift,
+            cards: cards.clone(),
+            flight: flight.clone(),
+            reference: reference.clone(),
+            synthesis: synthesis.clone(),
+            body: body.clone(),
+            wing: wing.clone(),
+            horizontal_tail: horizontal_tail.clone(),
+            vertical_tail: vertical_tail.clone(),
+            ventral_fin: ventral_fin.clone(),
+            twin_panels: twin_panels.clone(),
+            sections,
+            larwb: larwb.clone(),
+            conditions: conditions.clone(),
+            condition_warnings: condition_warnings.clone(),
+            airfoils: airfoils.clone(),
+            other: other.clone(),
+            save: *save,
+        }
+    }
+
     /// Types one case as read; returns it with the diagnostics of its physical checks.
     pub fn from_raw(raw: &RawCase, file: &str) -> (Case, Vec<Diagnostic>) {
         let dim = raw.cards.dim.unwrap_or_default();

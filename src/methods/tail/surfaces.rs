@@ -57,17 +57,18 @@ pub fn tail_as_wing(case: &Case) -> Result<Case, TailError> {
         .horizontal_tail
         .clone()
         .ok_or(TailError::NoHorizontalTail)?;
-    let mut proxy = case.clone();
+    // The tail's section input in the wing's place; the other surfaces' are not read.
+    let sections = case
+        .sections
+        .get(Surface::HorizontalTail.name())
+        .map(|s| (Surface::Wing.name().to_string(), s.clone()))
+        .into_iter()
+        .collect();
+    let mut proxy = case.with_sections(sections);
     let (area, chord) = reference(case);
     proxy.reference.area = area;
     proxy.reference.chord = chord;
     proxy.wing = Some(tail);
-    proxy.sections.remove(Surface::Wing.name());
-    if let Some(s) = case.sections.get(Surface::HorizontalTail.name()) {
-        proxy
-            .sections
-            .insert(Surface::Wing.name().to_string(), s.clone());
-    }
     proxy.airfoils = case
         .airfoils
         .iter()

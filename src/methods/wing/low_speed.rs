@@ -48,8 +48,15 @@ pub fn mach_zero_wing(
         .conditions
         .iter()
         .any(|c| c.mach > stmach && c.mach < tsmach);
-    let mut proxy = case.clone();
     let wing_name = Surface::Wing.name();
+    // The wing's section input alone: the wing methods read no other surface's.
+    let mut proxy = case.with_sections(
+        case.sections
+            .get(wing_name)
+            .map(|s| (wing_name.to_string(), s.clone()))
+            .into_iter()
+            .collect(),
+    );
     let user = case.sections.get(wing_name);
     let scalar = |n: &str| user.and_then(|u| u.scalars.get(n).copied());
     let mut transonic_slope = false;
