@@ -9,6 +9,7 @@ use crate::deck::cards::{DerivUnit, Dim};
 use crate::geometry::section::{section_for, SectionCoordinates};
 use crate::methods::section::surface_section;
 use crate::methods::section::{section_characteristics, SectionCharacteristics};
+use std::fmt;
 
 /// Static coefficients against angle of attack (columns of the original's static page).
 /// Derivatives are per radian. `None` where there is no value.
@@ -52,6 +53,18 @@ pub struct DynamicDerivatives {
 pub const DYNAMIC_NAMES: [&str; 9] = [
     "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
 ];
+
+/// Room for a labelled warning: most are shorter, so the text is written without regrowing.
+const WARNING_CAPACITY: usize = 192;
+
+/// `label: warning`, the text a result's warning list holds.
+fn labelled(label: impl fmt::Display, warning: impl fmt::Display) -> String {
+    use fmt::Write;
+    let mut text = String::with_capacity(WARNING_CAPACITY);
+    // Writing to a String does not fail.
+    let _ = write!(text, "{label}: {warning}");
+    text
+}
 
 fn nones(n: usize) -> Vec<Option<f64>> {
     vec![None; n]
@@ -326,7 +339,7 @@ fn add_sideslip(
             warnings.extend(
                 lat.warnings
                     .iter()
-                    .map(|x| format!("{label}, sideslip: {x}")),
+                    .map(|x| labelled(format_args!("{label}, sideslip"), x)),
             );
             s.cyb = lat.cyb;
             s.cnb = lat.cnb;
@@ -358,7 +371,7 @@ fn low_aspect_ratio_coefficients(
     let mut warnings: Vec<String> = page
         .warnings
         .iter()
-        .map(|w| format!("low-aspect-ratio wing-body: {w}"))
+        .map(|w| labelled("low-aspect-ratio wing-body", w))
         .collect();
     let some = |v: &[f64]| {
         v.iter()
@@ -398,7 +411,7 @@ fn body_alone_coefficients(
     let mut warnings: Vec<String> = b
         .warnings
         .iter()
-        .map(|w| format!("body alone: {w}"))
+        .map(|w| labelled("body alone", w))
         .collect();
     let n = alpha_deg.len();
     let mut s = StaticCoefficients::empty(n);
@@ -423,7 +436,7 @@ fn wing_alone_coefficients(
     let mut warnings: Vec<String> = w
         .warnings
         .iter()
-        .map(|x| format!("wing alone: {x}"))
+        .map(|x| labelled("wing alone", x))
         .collect();
     let mut s = StaticCoefficients::empty(alpha_deg.len());
     // Sideslip derivatives of the wing alone (DATCOM 5.1.2.1).
@@ -498,7 +511,7 @@ fn tail_configuration_coefficients(
         _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
     }
     .ok_or_else(|| format!("{part}: not computed"))?;
-    let mut warnings: Vec<String> = t.warnings.iter().map(|w| format!("tails: {w}")).collect();
+    let mut warnings: Vec<String> = t.warnings.iter().map(|w| labelled("tails", w)).collect();
     let mut s = coefficients(c);
     let alpha = &t.alpha_deg;
     let wb = &t.terms.wing_body;
@@ -565,7 +578,7 @@ fn wing_body_coefficients(
     let mut warnings: Vec<String> = w
         .warnings
         .iter()
-        .map(|x| format!("wing-body: {x}"))
+        .map(|x| labelled("wing-body", x))
         .collect();
     let mut s = StaticCoefficients::empty(alpha_deg.len());
     // Sideslip derivatives of the wing-body (DATCOM 5.2.2.1, 5.2.3.1), which need the wing
@@ -608,7 +621,7 @@ fn horizontal_tail_coefficients(
         .surface
         .warnings
         .iter()
-        .map(|x| format!("horizontal tail alone: {x}"))
+        .map(|x| labelled("horizontal tail alone", x))
         .collect();
     let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
         alpha_deg,
@@ -641,7 +654,7 @@ fn vertical_tail_drag(
         &mut tail_warnings,
     )
     .map_err(|e| format!("{label}: {e}"))?;
-    warnings.extend(tail_warnings.iter().map(|w| format!("{label}: {w}")));
+    warnings.extend(tail_warnings.iter().map(|w| labelled(&label, w)));
     Ok(drag.map(|d| d.drag.total))
 }
 
@@ -857,7 +870,7 @@ fn dynamic_derivatives(
     })();
     match computed {
         Ok(d) => {
-            let warnings = d.warnings.iter().map(|w| format!("{label}: {w}")).collect();
+            let warnings = d.warnings.iter().map(|w| labelled(&label, w)).collect();
             (DynamicDerivatives::from_columns(&d), warnings)
         }
         Err(e) => (DynamicDerivatives::empty(n), vec![format!("{label}: {e}")]),
@@ -1182,14 +1195,14 @@ fn sections(case: &Case) -> Vec<SectionResult> {
                     warnings.extend(
                         s.warnings
                             .iter()
-                            .map(|w| format!("{} section: {w}", surface.name())),
+                            .map(|w| labelled(format_args!("{} section", surface.name()), w)),
                     );
                     match section_characteristics(&s.shape, &s.conditions, &s.overrides) {
                         Ok(c) => {
                             warnings.extend(
-                                c.warnings
-                                    .iter()
-                                    .map(|w| format!("{} section: {w}", surface.name())),
+                                c.warnings.iter().map(|w| {
+                                    labelled(format_args!("{} section", surface.name()), w)
+                                }),
                             );
                             Some(c)
                         }
