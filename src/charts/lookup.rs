@@ -1,6 +1,6 @@
 //! Interpolation in a chart, as the original's table routines do it.
 
-use super::{Axis, Chart, ChartWarning, Node, Outside};
+use super::{Chart, ChartWarning, Node, Outside};
 
 /// The result of a lookup: the value (none when an axis refuses to extrapolate) and a warning
 /// for every variable that left the data.
@@ -14,12 +14,24 @@ pub struct Lookup {
 /// `tol`, relative to the query, or to the node when the query is 0, or absolute near zero;
 /// `tol = 0`: equal only).
 fn snaps(xi: f64, a: f64, tol: f64) -> bool {
+    /// Relative margin around `tol·|scale|` outside which the comparison is decided without
+    /// the division: far beyond the few units of rounding in the product.
+    const MARGIN: f64 = 1e-9;
     if tol == 0.0 {
         return xi == a;
     }
     let mut scale = if a == 0.0 { xi } else { a };
     if scale.abs() <= 1e-4 {
         scale = 1.0;
+    }
+    // The quotient's comparison, decided by a product away from the boundary.
+    let distance = (a - xi).abs();
+    let bound = tol * scale.abs();
+    if distance > bound * (1.0 + MARGIN) {
+        return false;
+    }
+    if distance < bound * (1.0 - MARGIN) {
+        return true;
     }
     ((a - xi) / scale).abs() < tol
 }
@@ -36,11 +48,13 @@ fn locate(x: &[f64], a: f64, tol: f64) -> (usize, Option<usize>) {
     let n = x.len();
     let ascending = x[n - 1] > x[0];
     // Count of nodes below the query, and the storage index of the nearest below and above.
+    // On a monotone axis the nodes before the query are counted: independent comparisons
+    // rather than a binary search's chain of dependent loads (axes have a few dozen nodes).
     let (lower, below, above) = if ascending {
-        let p = x.partition_point(|&v| v < a);
+        let p = x.iter().filter(|&&v| v < a).count();
         (p, p.checked_sub(1), (p < n).then_some(p))
     } else {
-        let p = x.partition_point(|&v| v >= a);
+        let p = x.iter().filter(|&&v| v >= a).count();
         // Storage 0..p are at or above the query, p..n below.
         (n - p, (p < n).then_some(p), p.checked_sub(1))
     };
@@ -72,35 +86,51 @@ fn quadratic(x: [f64; 3], y: [f64; 3], a: f64) -> f64 {
     y[0] * l0 + y[1] * l1 + y[2] * l2
 }
 
-struct Walk<'a> {
+/// Axes whose located queries a walk remembers (the charts have at most four).
+const REMEMBERED_AXES: usize = 4;
+
+/// Distinct warnings a walk remembers so as to say each once (a lookup gives at most one per
+/// branch of each axis).
+const REMEMBERED_WARNINGS: usize = 16;
+
+/// What makes a warning of a walk distinct: the axis, the value, its range and the action.
+type WarningKey = (usize, f64, f64, f64, Outside);
+
+struct Walk<'a, F: FnMut(ChartWarning)> {
     chart: &'a Chart,
-    warnings: Vec<ChartWarning>,
+    /// Where each warning goes, once.
+    sink: F,
+    said: [Option<WarningKey>; REMEMBERED_WARNINGS],
+    /// Where the query fell on each shared axis ([`Chart::shared_axes`]), once found.
+    located: [Option<(usize, Option<usize>)>; REMEMBERED_AXES],
 }
 
-impl Walk<'_> {
-    fn warn(&mut self, axis: &Axis, value: f64, x: &[f64], action: Outside) {
+impl<F: FnMut(ChartWarning)> Walk<'_, F> {
+    fn warn(&mut self, depth: usize, value: f64, x: &[f64], action: Outside) {
         let (min, max) = x
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
                 (lo.min(*v), hi.max(*v))
             });
-        let seen = self.warnings.iter().any(|w| {
-            w.variable == axis.symbol
-                && w.value == value
-                && w.min == min
-                && w.max == max
-                && w.action == action
-        });
-        if !seen {
-            self.warnings.push(ChartWarning {
-                chart: self.chart.id.clone(),
-                variable: axis.symbol.clone(),
-                value,
-                min,
-                max,
-                action,
-            });
+        let axes = &self.chart.axes;
+        let symbol = &axes[depth].symbol;
+        let same = |&(d, v, lo, hi, act): &WarningKey| {
+            axes[d].symbol == *symbol && v == value && lo == min && hi == max && act == action
+        };
+        if self.said.iter().flatten().any(same) {
+            return;
         }
+        if let Some(free) = self.said.iter_mut().find(|k| k.is_none()) {
+            *free = Some((depth, value, min, max, action));
+        }
+        (self.sink)(ChartWarning {
+            chart: self.chart.id.clone(),
+            variable: symbol.clone(),
+            value,
+            min,
+            max,
+            action,
+        });
     }
 
     /// A node's value: a leaf's directly, a table's by the walk.
@@ -118,7 +148,17 @@ impl Walk<'_> {
             Node::Table { x, nodes } => (x, nodes),
         };
         let a = args[depth];
-        let (lower, snapped) = locate(x, a, self.chart.node_tolerance);
+        let shared = depth < self.chart.shared_axes.min(REMEMBERED_AXES);
+        let (lower, snapped) = match self.located.get(depth).copied().flatten() {
+            Some(found) if shared => found,
+            _ => {
+                let found = locate(x, a, self.chart.node_tolerance);
+                if shared {
+                    self.located[depth] = Some(found);
+                }
+                found
+            }
+        };
         if let Some(i) = snapped {
             return self.child(&nodes[i], depth + 1, args);
         }
@@ -138,7 +178,7 @@ impl Walk<'_> {
         let axis = &self.chart.axes[depth];
         let below = a <= x[idx(0)];
         let policy = if below { axis.below } else { axis.above };
-        self.warn(axis, a, x, policy);
+        self.warn(depth, a, x, policy);
         // End nodes, nearest first.
         let mut end_nodes = [0; 3];
         for (k, e) in end_nodes.iter_mut().enumerate().take(n) {
@@ -169,38 +209,42 @@ impl Chart {
     /// Looks the chart up at `args`, one value per axis from the outermost. A wrong number of
     /// arguments or a non-finite argument gives no value and a warning.
     pub fn lookup(&self, args: &[f64]) -> Lookup {
+        let mut warnings = Vec::new();
+        let value = self.lookup_each(args, |w| warnings.push(w));
+        Lookup { value, warnings }
+    }
+
+    /// [`Chart::lookup`] giving each warning to `sink` as it arises (each distinct one once),
+    /// without collecting them.
+    pub fn lookup_each(&self, args: &[f64], mut sink: impl FnMut(ChartWarning)) -> Option<f64> {
         if args.len() != self.axes.len() || args.iter().any(|a| !a.is_finite()) {
-            return Lookup {
-                value: None,
-                warnings: vec![ChartWarning {
-                    chart: self.id.clone(),
-                    variable: self
-                        .axes
-                        .iter()
-                        .map(|a| a.symbol.as_str())
-                        .collect::<Vec<_>>()
-                        .join(",")
-                        .into(),
-                    value: args
-                        .iter()
-                        .copied()
-                        .find(|a| !a.is_finite())
-                        .unwrap_or(f64::NAN),
-                    min: f64::NAN,
-                    max: f64::NAN,
-                    action: Outside::Refuse,
-                }],
-            };
+            sink(ChartWarning {
+                chart: self.id.clone(),
+                variable: self
+                    .axes
+                    .iter()
+                    .map(|a| a.symbol.as_str())
+                    .collect::<Vec<_>>()
+                    .join(",")
+                    .into(),
+                value: args
+                    .iter()
+                    .copied()
+                    .find(|a| !a.is_finite())
+                    .unwrap_or(f64::NAN),
+                min: f64::NAN,
+                max: f64::NAN,
+                action: Outside::Refuse,
+            });
+            return None;
         }
         let mut walk = Walk {
             chart: self,
-            warnings: Vec::new(),
+            sink,
+            said: [None; REMEMBERED_WARNINGS],
+            located: [None; REMEMBERED_AXES],
         };
-        let value = walk.eval(&self.data, 0, args).filter(|v| v.is_finite());
-        Lookup {
-            value,
-            warnings: walk.warnings,
-        }
+        walk.eval(&self.data, 0, args).filter(|v| v.is_finite())
     }
 }
 
@@ -268,6 +312,41 @@ values = [0.0, 1.0, 2.0]
         let c = grid();
         // Within 0.1 % of x = 1: the node's value, not the interpolated one.
         assert_eq!(c.lookup(&[0.0, 1.0005]).value, Some(1.0));
+    }
+
+    /// The snapping test decided by a product agrees with GLOOK's quotient everywhere,
+    /// boundaries included.
+    #[test]
+    fn snapping_without_the_division_is_the_quotient_test() {
+        let quotient = |xi: f64, a: f64, tol: f64| {
+            let mut scale = if a == 0.0 { xi } else { a };
+            if scale.abs() <= 1e-4 {
+                scale = 1.0;
+            }
+            ((a - xi) / scale).abs() < tol
+        };
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let tol = 1e-3;
+        for _ in 0..200_000 {
+            let xi = (next() - 0.5) * 10f64.powi((next() * 12.0) as i32 - 6);
+            // Queries at the boundary, within a few units of it, and anywhere near.
+            let step = f64::EPSILON * (next() * 8.0 - 4.0).round();
+            for a in [
+                xi * (1.0 + tol) * (1.0 + step),
+                xi * (1.0 - tol) * (1.0 + step),
+                xi + tol * (1.0 + step),
+                xi * (1.0 + (next() - 0.5) * 4.0 * tol),
+                0.0,
+            ] {
+                assert_eq!(snaps(xi, a, tol), quotient(xi, a, tol), "{xi:e} {a:e}");
+            }
+        }
     }
 
     #[test]

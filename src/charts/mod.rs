@@ -97,6 +97,11 @@ pub struct Chart {
     /// Relative distance within which a query takes a node's value.
     pub node_tolerance: f64,
     pub data: Node,
+    /// How many axes, from the outermost, have the same nodes in every branch of `data`:
+    /// every axis of a grid, all but the innermost of a family of curves. A lookup finds the
+    /// query among such an axis's nodes once.
+    #[serde(skip)]
+    pub shared_axes: usize,
     /// Path of the file under charts/.
     pub file: String,
 }
@@ -298,7 +303,14 @@ impl Query {
             digits /= 10;
             count -= 1;
         }
-        let text = digits.to_string();
+        // The digits as text, without allocating (at most QUERY_DIGITS of them).
+        let mut buffer = [0u8; QUERY_DIGITS];
+        let mut rest = digits;
+        for place in (0..count as usize).rev() {
+            buffer[place] = b'0' + (rest % 10) as u8;
+            rest /= 10;
+        }
+        let text = std::str::from_utf8(&buffer[..count as usize]).map_err(|_| fmt::Error)?;
         if negative {
             f.write_str("-")?;
         }

@@ -179,6 +179,7 @@ pub fn parse_chart(text: &str, file: &str) -> Result<Chart, ChartError> {
             }
         }
     }
+    let shared_axes = outer.len();
     let data = match (&f.data.values, f.data.curves.is_empty(), outer.len() == n) {
         (Some(values), true, true) => {
             let expected: usize = outer.iter().map(Vec::len).product();
@@ -257,6 +258,7 @@ pub fn parse_chart(text: &str, file: &str) -> Result<Chart, ChartError> {
         defects: f.defects,
         node_tolerance: tol,
         data,
+        shared_axes,
         file: file.into(),
     })
 }

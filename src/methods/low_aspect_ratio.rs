@@ -257,13 +257,13 @@ struct Reader {
 impl Reader {
     fn read(&mut self, id: &'static str, args: &[f64]) -> Result<f64, LowAspectRatioError> {
         let chart = charts::get(id).ok_or(LowAspectRatioError::MissingChart { chart: id })?;
-        let lookup = chart.lookup(args);
-        for w in lookup.warnings {
-            if !self.warnings.contains(&w) {
-                self.warnings.push(w);
+        let warnings = &mut self.warnings;
+        let value = chart.lookup_each(args, |w| {
+            if !warnings.contains(&w) {
+                warnings.push(w);
             }
-        }
-        lookup.value.ok_or(LowAspectRatioError::ChartNoValue {
+        });
+        value.ok_or(LowAspectRatioError::ChartNoValue {
             chart: id,
             args: args.to_vec(),
         })

@@ -44,14 +44,13 @@ pub fn read(
     args: &[f64],
     warnings: &mut Vec<BodyWarning>,
 ) -> Result<f64, BodyMethodError> {
-    let lookup = chart(id)?.lookup(args);
-    for w in lookup.warnings {
+    let value = chart(id)?.lookup_each(args, |w| {
         let w = BodyWarning::Chart(w);
         if !warnings.contains(&w) {
             warnings.push(w);
         }
-    }
-    lookup.value.ok_or(BodyMethodError::ChartNoValue {
+    });
+    value.ok_or(BodyMethodError::ChartNoValue {
         chart: id,
         args: args.to_vec(),
     })

@@ -62,14 +62,13 @@ pub fn read(
     warnings: &mut Vec<DynamicWarning>,
 ) -> Result<f64, DynamicError> {
     let chart = charts::get(id).ok_or(DynamicError::MissingChart { chart: id })?;
-    let found = chart.lookup(args);
-    for w in found.warnings {
+    let value = chart.lookup_each(args, |w| {
         let w = DynamicWarning::Chart(w);
         if !warnings.contains(&w) {
             warnings.push(w);
         }
-    }
-    found.value.ok_or_else(|| DynamicError::ChartNoValue {
+    });
+    value.ok_or_else(|| DynamicError::ChartNoValue {
         chart: id,
         args: args.to_vec(),
     })

@@ -74,14 +74,13 @@ pub fn read(
     warnings: &mut Vec<LateralWarning>,
 ) -> Result<f64, LateralError> {
     let chart = charts::get(id).ok_or(LateralError::MissingChart { chart: id })?;
-    let found = chart.lookup(args);
-    for w in found.warnings {
+    let value = chart.lookup_each(args, |w| {
         let w = LateralWarning::Chart(w);
         if !warnings.contains(&w) {
             warnings.push(w);
         }
-    }
-    found.value.ok_or_else(|| LateralError::ChartNoValue {
+    });
+    value.ok_or_else(|| LateralError::ChartNoValue {
         chart: id,
         args: args.to_vec(),
     })

@@ -133,9 +133,8 @@ fn read(
     warnings: &mut Vec<MaxLiftWarning>,
 ) -> Result<f64, MaxLiftError> {
     let chart = charts::get(id).ok_or(MaxLiftError::Chart { chart: id })?;
-    let found = chart.lookup(args);
-    warnings.extend(found.warnings.into_iter().map(MaxLiftWarning::Chart));
-    found.value.ok_or(MaxLiftError::Chart { chart: id })
+    let value = chart.lookup_each(args, |w| warnings.push(MaxLiftWarning::Chart(w)));
+    value.ok_or(MaxLiftError::Chart { chart: id })
 }
 
 /// The section maximum lift coefficient of `geometry` at each Reynolds number on the chord

@@ -28,14 +28,13 @@ pub fn read(
     warnings: &mut Vec<TailWarning>,
 ) -> Result<f64, TailError> {
     let chart = charts::get(id).ok_or(TailError::MissingChart { chart: id })?;
-    let found = chart.lookup(args);
-    for w in found.warnings {
+    let value = chart.lookup_each(args, |w| {
         let w = TailWarning::Chart(w);
         if !warnings.contains(&w) {
             warnings.push(w);
         }
-    }
-    found.value.ok_or_else(|| TailError::ChartNoValue {
+    });
+    value.ok_or_else(|| TailError::ChartNoValue {
         chart: id,
         args: args.to_vec(),
     })

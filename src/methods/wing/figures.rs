@@ -124,14 +124,13 @@ pub fn read(
     warnings: &mut Vec<WingWarning>,
 ) -> Result<f64, WingMethodError> {
     let chart = charts::get(id).ok_or(WingMethodError::MissingChart { chart: id })?;
-    let found = chart.lookup(args);
-    for w in found.warnings {
+    let value = chart.lookup_each(args, |w| {
         let w = WingWarning::Chart(w);
         if !warnings.contains(&w) {
             warnings.push(w);
         }
-    }
-    found.value.ok_or_else(|| WingMethodError::ChartNoValue {
+    });
+    value.ok_or_else(|| WingMethodError::ChartNoValue {
         chart: id,
         args: args.to_vec(),
     })

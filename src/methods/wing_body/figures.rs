@@ -50,14 +50,13 @@ pub fn read_optional(
     warnings: &mut Vec<WingBodyWarning>,
 ) -> Result<Option<f64>, WingBodyError> {
     let chart = charts::get(id).ok_or(WingBodyError::MissingChart { chart: id })?;
-    let found = chart.lookup(args);
-    for w in found.warnings {
+    let value = chart.lookup_each(args, |w| {
         let w = WingBodyWarning::Chart(w);
         if !warnings.contains(&w) {
             warnings.push(w);
         }
-    }
-    Ok(found.value)
+    });
+    Ok(value)
 }
 
 /// The chart's value at `args`; leaving its data is a warning, a refusal an error.
