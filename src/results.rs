@@ -654,7 +654,7 @@ fn vertical_tail_drag(
         &mut tail_warnings,
     )
     .map_err(|e| format!("{label}: {e}"))?;
-    warnings.extend(tail_warnings.iter().map(|w| labelled(&label, w)));
+    warnings.extend(tail_warnings.iter().map(|w| labelled(label, w)));
     Ok(drag.map(|d| d.drag.total))
 }
 

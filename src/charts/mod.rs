@@ -327,11 +327,11 @@ impl Query {
             for _ in 0..(-exponent - 1) {
                 f.write_str("0")?;
             }
-            return f.write_str(&text);
+            return f.write_str(text);
         }
         let whole = (exponent + 1) as usize;
         if (count as usize) <= whole {
-            f.write_str(&text)?;
+            f.write_str(text)?;
             for _ in 0..whole - count as usize {
                 f.write_str("0")?;
             }
