@@ -335,7 +335,7 @@ fn inputs(
                     .ok_or("no card")?;
                 let section = original_naca(card).ok_or("no original section")?;
                 let mut s = SectionShape::from_naca(&section).map_err(|e| e.to_string())?;
-                for c in &mut s.camber {
+                for c in s.camber.values_mut() {
                     if *c < 1e-5 {
                         *c = 0.0;
                     }
@@ -655,7 +655,7 @@ fn four_digit(m: f64, p: f64, t: f64, n: usize) -> SectionShape {
     let x: Vec<f64> = (0..n)
         .map(|i| 0.5 * (1.0 - (std::f64::consts::PI * i as f64 / (n - 1) as f64).cos()))
         .collect();
-    let camber = x
+    let camber: Vec<f64> = x
         .iter()
         .map(|&x| {
             if m == 0.0 {
@@ -667,7 +667,7 @@ fn four_digit(m: f64, p: f64, t: f64, n: usize) -> SectionShape {
             }
         })
         .collect();
-    let half = x
+    let half: Vec<f64> = x
         .iter()
         .enumerate()
         .map(|(i, &x)| {

@@ -46,7 +46,9 @@ pub use max_lift::{
     MAX_LIFT_REFERENCE_REYNOLDS_NUMBER, REYNOLDS_CHART as MAX_LIFT_REYNOLDS_CHART,
     THICKNESS_POSITION_CHART as MAX_LIFT_THICKNESS_POSITION_CHART,
 };
-pub use shape::{DesignLift, MaximumReading, SectionShape, ShapeError, ThicknessReading};
+pub use shape::{
+    DesignLift, MaximumReading, SectionShape, ShapeError, StationValues, ThicknessReading,
+};
 pub use surface::{surface_section, SurfaceSection, SurfaceSectionError};
 pub use viscous::MIN_REYNOLDS_NUMBER;
 

@@ -1,6 +1,9 @@
 //! The section geometry the characteristics are computed from, independent of where it comes
 //! from (a NACA designation or the xxSCHR coordinates).
 
+use std::ops::Deref;
+use std::sync::Arc;
+
 use serde::Serialize;
 
 use super::interpolation::MIN_STATIONS;
@@ -46,15 +49,55 @@ pub enum MaximumReading {
     LastRise,
 }
 
+/// Values of a section at its stations (reads as a slice). The copies of a shape share
+/// them: copying a shape copies no numbers, and comparing two copies compares none.
+#[derive(Debug, Clone)]
+pub struct StationValues(Arc<[f64]>);
+
+impl Deref for StationValues {
+    type Target = [f64];
+    fn deref(&self) -> &[f64] {
+        &self.0
+    }
+}
+
+impl StationValues {
+    /// The values to change in place (copied first when another shape shares them).
+    pub fn values_mut(&mut self) -> &mut [f64] {
+        if Arc::get_mut(&mut self.0).is_none() {
+            self.0 = self.0.iter().copied().collect();
+        }
+        Arc::get_mut(&mut self.0).map_or(&mut [], |v| v)
+    }
+}
+
+impl PartialEq for StationValues {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0) || self.0[..] == other.0[..]
+    }
+}
+
+impl From<Vec<f64>> for StationValues {
+    fn from(v: Vec<f64>) -> Self {
+        StationValues(v.into())
+    }
+}
+
+impl Serialize for StationValues {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.0[..].serialize(s)
+    }
+}
+
 /// An airfoil section: ordinates at chordwise stations, as fractions of the chord.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SectionShape {
     /// Chordwise stations x/c, strictly ascending from 0 to 1.
-    pub x: Vec<f64>,
+    pub x: StationValues,
     /// Mean-line ordinates z_c/c at the stations (0 at both ends for a section on its chord).
-    pub camber: Vec<f64>,
+    pub camber: StationValues,
     /// Half thickness z_t/c at the stations (0 at both ends).
-    pub half_thickness: Vec<f64>,
+    pub half_thickness: StationValues,
     pub thickness_reading: ThicknessReading,
     /// Leading-edge radius the designation fixes, fraction of chord.
     pub leading_edge_radius: Option<f64>,
@@ -100,14 +143,14 @@ impl SectionShape {
     /// A section from stations, mean line and half thickness, checked; read smoothly, with no
     /// designation values.
     pub fn new(
-        x: Vec<f64>,
-        camber: Vec<f64>,
-        half_thickness: Vec<f64>,
+        x: impl Into<StationValues>,
+        camber: impl Into<StationValues>,
+        half_thickness: impl Into<StationValues>,
     ) -> Result<SectionShape, ShapeError> {
         let shape = SectionShape {
-            x,
-            camber,
-            half_thickness,
+            x: x.into(),
+            camber: camber.into(),
+            half_thickness: half_thickness.into(),
             thickness_reading: ThicknessReading::Smooth,
             leading_edge_radius: None,
             max_thickness: None,

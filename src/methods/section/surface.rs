@@ -49,9 +49,12 @@ impl SectionShape {
     /// with its leading-edge radius and maximum thickness; read smoothly, no design values.
     pub fn from_coordinates(c: &SectionCoordinates) -> Result<SectionShape, ShapeError> {
         let mut shape = SectionShape::new(
-            c.rows.iter().map(|r| r.x).collect(),
-            c.rows.iter().map(|r| r.mean).collect(),
-            c.rows.iter().map(|r| 0.5 * r.thickness).collect(),
+            c.rows.iter().map(|r| r.x).collect::<Vec<f64>>(),
+            c.rows.iter().map(|r| r.mean).collect::<Vec<f64>>(),
+            c.rows
+                .iter()
+                .map(|r| 0.5 * r.thickness)
+                .collect::<Vec<f64>>(),
         )?;
         shape.leading_edge_radius = Some(c.leading_edge_radius);
         shape.max_thickness = Some(c.max_thickness);
