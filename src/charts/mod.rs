@@ -422,19 +422,32 @@ fn parsed(slot: usize) -> Option<&'static Chart> {
 
 /// The chart with this id (`4.1.3.2-49`, ...), when it is embedded and valid. A file whose id
 /// line is not what its parsed chart says falls back on the registry of every chart.
-///
-/// The charts found last are kept per thread in a small table addressed by where the id's
-/// text is (the methods pass the same constant each time): a hit costs a comparison of the id
-/// instead of hashing it, and gives the same chart, since the chart found for an id has that id.
 pub fn get(id: &str) -> Option<&'static Chart> {
+    found(id, false)
+}
+
+/// [`get`] for an id whose text lives as long as the program (the methods' figure constants):
+/// a chart found for it is found again by where the text is, without comparing the text.
+pub fn get_static(id: &'static str) -> Option<&'static Chart> {
+    found(id, true)
+}
+
+/// The charts found last are kept per thread in a small table addressed by where the id's
+/// text is (the methods pass the same constant each time), with that place: a hit costs a
+/// comparison of the id (or of the place, for a text that never changes) instead of hashing
+/// it, and gives the same chart, since the chart found for an id has that id.
+fn found(id: &str, fixed_text: bool) -> Option<&'static Chart> {
     const RECENT: usize = 64;
+    /// A chart found, and where the text of the id it was asked by is.
+    type Found = Option<(&'static Chart, usize)>;
     thread_local! {
-        static FOUND: [Cell<Option<&'static Chart>>; RECENT] =
-            const { [const { Cell::new(None) }; RECENT] };
+        static FOUND: [Cell<Found>; RECENT] = const { [const { Cell::new(None) }; RECENT] };
     }
-    let slot = ((id.as_ptr() as usize >> 2) ^ id.len()) % RECENT;
-    if let Ok(Some(c)) = FOUND.try_with(|f| f[slot].get()) {
-        if c.id == id {
+    let place = id.as_ptr() as usize;
+    let slot = ((place >> 2) ^ id.len()) % RECENT;
+    if let Ok(Some((c, at))) = FOUND.try_with(|f| f[slot].get()) {
+        // A fixed text at the same place, of the same length, is the same id.
+        if (fixed_text && at == place && c.id.len() == id.len()) || c.id == id {
             return Some(c);
         }
     }
@@ -442,8 +455,8 @@ pub fn get(id: &str) -> Option<&'static Chart> {
         .get(id)
         .and_then(|&slot| parsed(slot))
         .or_else(|| registry().charts.get(id));
-    if chart.is_some() {
-        let _ = FOUND.try_with(|f| f[slot].set(chart));
+    if let Some(c) = chart {
+        let _ = FOUND.try_with(|f| f[slot].set(Some((c, place))));
     }
     chart
 }
@@ -460,7 +473,21 @@ pub fn invalid() -> &'static [(String, ChartError)] {
 
 #[cfg(test)]
 mod tests {
-    use super::Query;
+    use super::{get, get_static, Query, CHART_IDS};
+
+    /// A chart asked for by a fixed id and by the same id in other text is the same chart, on
+    /// the first asking and the next.
+    #[test]
+    fn fixed_ids_find_the_charts_their_text_finds() {
+        for _ in 0..2 {
+            for &id in CHART_IDS {
+                let copied = id.to_string();
+                let by_place = get_static(id).map(|c| c.id.as_str());
+                assert_eq!(by_place, get(&copied).map(|c| c.id.as_str()), "{id}");
+                assert_eq!(by_place, Some(id), "{id}");
+            }
+        }
+    }
 
     #[test]
     fn query_values_are_shown_to_four_significant_digits() {
