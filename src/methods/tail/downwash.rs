@@ -425,6 +425,22 @@ pub(crate) fn downwash_from(
     let tail_semispan = tp.semispan;
     let arm_over_semispan = placement.arm / semispan;
 
+    // The empirical gradient (DWASH 2) does not change along the integration.
+    let empirical = (method == DownwashMethod::Empirical).then(|| {
+        let lever = (tail_apex.0
+            - (tail_geometry.x_mac_le + tail_geometry.theoretical.mac / 4.0)
+                * alih.to_radians().cos())
+            - (xw - (geometry.x_mac_le + geometry.theoretical.mac / 4.0) * aliw.to_radians().cos());
+        empirical_downwash_gradient(
+            a7,
+            taper,
+            c4.cos,
+            placement.height,
+            lever,
+            p.exposed_semispan,
+        )
+    });
+
     let mut sheets = Vec::with_capacity(n);
     let mut epsilon: Vec<Option<f64>> = Vec::with_capacity(n);
     for &a in &wing_alpha {
@@ -444,15 +460,27 @@ pub(crate) fn downwash_from(
             else {
                 break;
             };
+            let ratio = effective_aspect_ratio_ratio(taper, c4.cos, c4.tan, fraction_of_stall);
+            let aeff = a7 * ratio;
+            let gradient = match empirical {
+                Some(g) => g,
+                None => {
+                    let at_infinity =
+                        1.62 * slope_per_deg.to_degrees() / (PI * aeff) * area_ratio * kwb;
+                    downwash_gradient_at_tail(at_infinity, aeff, arm_over_semispan)
+                }
+            };
+            gradients.push(gradient);
+            if k + 1 < points {
+                continue;
+            }
+            // The vortex sheet at the angle itself (the last point), the one the average
+            // downwash is read for.
             if below == End::Hold && at < wing_alpha[0] {
                 cl *= (at - a126) / (wing_alpha[0] - a126);
             }
             let cl = area_ratio * cl * kwb;
-            let ratio = effective_aspect_ratio_ratio(taper, c4.cos, c4.tan, fraction_of_stall);
-            let aeff = a7 * ratio;
             let span_ratio = 2.0 * ratio / ((1.0 + taper) + ratio * (1.0 - taper));
-            let at_infinity = 1.62 * slope_per_deg.to_degrees() / (PI * aeff) * area_ratio * kwb;
-            let mut gradient = downwash_gradient_at_tail(at_infinity, aeff, arm_over_semispan);
             let beff = 2.0 * semispan * span_ratio;
             let half = beff / 2.0;
             let tip_chord_at = match sspnop {
@@ -479,23 +507,6 @@ pub(crate) fn downwash_from(
                 beff - (beff - vortex_root_factor * beff)
                     * (trailing / (semispan * 0.56 * a7 / cl)).abs().sqrt()
             };
-            if method == DownwashMethod::Empirical {
-                let lever = (tail_apex.0
-                    - (tail_geometry.x_mac_le + tail_geometry.theoretical.mac / 4.0)
-                        * alih.to_radians().cos())
-                    - (xw
-                        - (geometry.x_mac_le + geometry.theoretical.mac / 4.0)
-                            * aliw.to_radians().cos());
-                gradient = empirical_downwash_gradient(
-                    a7,
-                    taper,
-                    c4.cos,
-                    placement.height,
-                    lever,
-                    p.exposed_semispan,
-                );
-            }
-            gradients.push(gradient);
             last = Some(VortexSheet {
                 wing_alpha_deg: a,
                 steps: points,
