@@ -264,7 +264,7 @@ impl Reader {
                 warnings.push(w);
             }
         });
-        value.ok_or(LowAspectRatioError::ChartNoValue {
+        value.ok_or_else(|| LowAspectRatioError::ChartNoValue {
             chart: id,
             args: args.to_vec(),
         })

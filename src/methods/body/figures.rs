@@ -50,7 +50,7 @@ pub fn read(
             warnings.push(w);
         }
     });
-    value.ok_or(BodyMethodError::ChartNoValue {
+    value.ok_or_else(|| BodyMethodError::ChartNoValue {
         chart: id,
         args: args.to_vec(),
     })

@@ -80,10 +80,11 @@ pub fn fin_dynamic(
         .ok_or_else(|| DynamicError::Geometry {
             reason: "the fin's sideslip terms are missing".into(),
         })?;
-    let b =
-        crate::methods::lateral::lateral_reference_length(case).ok_or(DynamicError::Geometry {
+    let b = crate::methods::lateral::lateral_reference_length(case).ok_or_else(|| {
+        DynamicError::Geometry {
             reason: "no lateral reference length: give BLREF in $OPTINS".into(),
-        })?;
+        }
+    })?;
     let cyb = lateral.cyb.first().copied().flatten();
     let (l, z) = (terms.arm_x, terms.arm_z);
     let mut out = Dynamic::no_method(alpha_deg);
@@ -252,10 +253,10 @@ fn pitch_increments(
     let ht = case
         .horizontal_tail
         .as_ref()
-        .ok_or(DynamicError::Geometry {
+        .ok_or_else(|| DynamicError::Geometry {
             reason: "the case has no horizontal tail".into(),
         })?;
-    let wing = case.wing.as_ref().ok_or(DynamicError::Geometry {
+    let wing = case.wing.as_ref().ok_or_else(|| DynamicError::Geometry {
         reason: "the case has no wing".into(),
     })?;
     let k = tail_body.interference.wing_in_presence_of_body

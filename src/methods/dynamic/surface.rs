@@ -637,8 +637,8 @@ pub fn wing_dynamic(
         results: wing,
         cla_first: wing.cla_per_rad.first().copied().flatten(),
         has_body: case.body.is_some(),
-        span_reference: crate::methods::lateral::lateral_reference_length(case).ok_or(
-            DynamicError::Geometry {
+        span_reference: crate::methods::lateral::lateral_reference_length(case).ok_or_else(
+            || DynamicError::Geometry {
                 reason: "no lateral reference length: give BLREF in $OPTINS".into(),
             },
         )?,
@@ -681,10 +681,11 @@ pub fn horizontal_tail_dynamic(
         crate::methods::tail::tail_as_wing(case).map_err(|e| DynamicError::Geometry {
             reason: e.to_string(),
         })?;
-    let b =
-        crate::methods::lateral::lateral_reference_length(case).ok_or(DynamicError::Geometry {
+    let b = crate::methods::lateral::lateral_reference_length(case).ok_or_else(|| {
+        DynamicError::Geometry {
             reason: "no lateral reference length: give BLREF in $OPTINS".into(),
-        })?;
+        }
+    })?;
     proxy.reference.span = Some(b);
     let synthesis = case.synthesis.as_ref();
     let get = |f: fn(&crate::case::Synthesis) -> Option<f64>| synthesis.and_then(f).unwrap_or(0.0);

@@ -275,14 +275,14 @@ pub(crate) fn vortex_inputs(
         &mut wb_warnings,
     )
     .map_err(TailError::WingBody)?;
-    let canard_slope = wing
-        .cla_per_rad
-        .first()
-        .copied()
-        .flatten()
-        .ok_or(TailError::Geometry {
-            reason: "the canard (wing) has no lift-curve slope".to_string(),
-        })?;
+    let canard_slope =
+        wing.cla_per_rad
+            .first()
+            .copied()
+            .flatten()
+            .ok_or_else(|| TailError::Geometry {
+                reason: "the canard (wing) has no lift-curve slope".to_string(),
+            })?;
     Ok(CanardInputs {
         canard_aspect_ratio: geometry.theoretical.aspect_ratio,
         canard_taper: geometry.theoretical.taper,

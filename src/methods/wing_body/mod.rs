@@ -341,7 +341,9 @@ pub fn wing_body_with_section(
         xw,
         &mut warnings,
     )?;
-    let cd: Vec<Option<f64>> = drag.as_ref().map_or(vec![None; n], |d| d.cd.clone());
+    let cd: Vec<Option<f64>> = drag
+        .as_ref()
+        .map_or_else(|| vec![None; n], |d| d.cd.clone());
 
     // Pitching moment.
     let root_le = xw
