@@ -312,17 +312,23 @@ pub const BODY_ALONE: &str = "DATCOM BODY ALONE CONFIGURATION";
 
 /// Moves the longitudinal columns of a method's result (fields cd, cl, cm, cn, ca, xcp,
 /// cla_per_rad, cma_per_rad, as every static method names them) into a page's coefficients.
-macro_rules! set_longitudinal {
-    ($page:ident, $result:expr) => {{
+macro_rules! longitudinal {
+    ($result:expr, $n:expr) => {{
         let r = $result;
-        $page.cd = r.cd;
-        $page.cl = r.cl;
-        $page.cm = r.cm;
-        $page.cn = r.cn;
-        $page.ca = r.ca;
-        $page.xcp = r.xcp;
-        $page.cla = r.cla_per_rad;
-        $page.cma = r.cma_per_rad;
+        let n = $n;
+        StaticCoefficients {
+            cd: r.cd,
+            cl: r.cl,
+            cm: r.cm,
+            cn: r.cn,
+            ca: r.ca,
+            xcp: r.xcp,
+            cla: r.cla_per_rad,
+            cma: r.cma_per_rad,
+            cyb: nones(n),
+            cnb: nones(n),
+            clb: nones(n),
+        }
     }};
 }
 
@@ -413,12 +419,10 @@ fn body_alone_coefficients(
         .iter()
         .map(|w| labelled("body alone", w))
         .collect();
-    let n = alpha_deg.len();
-    let mut s = StaticCoefficients::empty(n);
     // Sideslip derivatives of the body alone (DATCOM 5.2.1.1 as the original forms them).
     let lateral = crate::methods::lateral::body_lateral(&b, case);
+    let mut s = longitudinal!(b, alpha_deg.len());
     add_sideslip(&mut s, &mut warnings, "body alone", Ok(lateral));
-    set_longitudinal!(s, b);
     Ok((s, warnings))
 }
 
@@ -438,12 +442,11 @@ fn wing_alone_coefficients(
         .iter()
         .map(|x| labelled("wing alone", x))
         .collect();
-    let mut s = StaticCoefficients::empty(alpha_deg.len());
     // Sideslip derivatives of the wing alone (DATCOM 5.1.2.1).
     let lateral = crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w)
         .map_err(|e| e.to_string());
+    let mut s = longitudinal!(w, alpha_deg.len());
     add_sideslip(&mut s, &mut warnings, "wing alone", lateral);
-    set_longitudinal!(s, w);
     Ok((s, warnings))
 }
 
@@ -488,9 +491,7 @@ fn vertical_tail_sideslip(
 }
 
 fn coefficients(c: &crate::methods::tail::Coefficients) -> StaticCoefficients {
-    let mut s = StaticCoefficients::empty(c.cd.len());
-    set_longitudinal!(s, c.clone());
-    s
+    longitudinal!(c.clone(), c.cd.len())
 }
 
 /// A configuration with tails at one condition (DATCOM 4.4, 4.5, totals), taken from the
@@ -580,7 +581,6 @@ fn wing_body_coefficients(
         .iter()
         .map(|x| labelled("wing-body", x))
         .collect();
-    let mut s = StaticCoefficients::empty(alpha_deg.len());
     // Sideslip derivatives of the wing-body (DATCOM 5.2.2.1, 5.2.3.1), which need the wing
     // alone as well.
     let lateral =
@@ -596,8 +596,8 @@ fn wing_body_coefficients(
                 )
                 .map_err(|e| e.to_string())
             });
+    let mut s = longitudinal!(w, alpha_deg.len());
     add_sideslip(&mut s, &mut warnings, "wing-body", lateral);
-    set_longitudinal!(s, w);
     Ok((s, warnings))
 }
 
@@ -1066,11 +1066,15 @@ fn compute_case(case: &Case) -> CaseResults {
                         tail_configuration_coefficients(case, index, t, part)
                     }
                 };
+                let (static_coefficients, static_warnings) = match computed {
+                    Ok((s, w)) => (s, Ok(w)),
+                    Err(e) => (StaticCoefficients::empty(n), Err(e)),
+                };
                 let mut entry = ConditionResults {
                     condition: c.clone(),
                     configuration: name,
                     alpha_deg: f.alpha_deg.clone(),
-                    static_coefficients: StaticCoefficients::empty(n),
+                    static_coefficients,
                     // With DAMP the original prints a dynamic page after each configuration's
                     // static page.
                     dynamic: None,
@@ -1106,11 +1110,9 @@ fn compute_case(case: &Case) -> CaseResults {
                     entry.dynamic = Some(d);
                     warnings.append(&mut w);
                 }
-                match computed {
-                    Ok((s, mut w)) => {
-                        entry.static_coefficients = s;
-                        warnings.append(&mut w);
-                    }
+                // The page's own warnings after its dynamic derivatives'.
+                match static_warnings {
+                    Ok(mut w) => warnings.append(&mut w),
                     Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach)),
                 }
                 if own {
