@@ -89,8 +89,8 @@ fn quadratic(x: [f64; 3], y: [f64; 3], a: f64) -> f64 {
 /// Axes whose located queries a walk remembers (the charts have at most four).
 const REMEMBERED_AXES: usize = 4;
 
-/// Distinct warnings a walk remembers so as to say each once (a lookup gives at most one per
-/// branch of each axis).
+/// Distinct warnings a walk remembers in place so as to say each once (a lookup gives at most
+/// one per branch of each axis: four with the embedded charts); more go to a list.
 const REMEMBERED_WARNINGS: usize = 16;
 
 /// What makes a warning of a walk distinct: the axis, the value, its range and the action.
@@ -101,6 +101,8 @@ struct Walk<'a, F: FnMut(ChartWarning)> {
     /// Where each warning goes, once.
     sink: F,
     said: [Option<WarningKey>; REMEMBERED_WARNINGS],
+    /// Those said once `said` is full (none with the embedded charts).
+    said_more: Vec<WarningKey>,
     /// Where the query fell on each shared axis ([`Chart::shared_axes`]), once found.
     located: [Option<(usize, Option<usize>)>; REMEMBERED_AXES],
 }
@@ -117,11 +119,13 @@ impl<F: FnMut(ChartWarning)> Walk<'_, F> {
         let same = |&(d, v, lo, hi, act): &WarningKey| {
             axes[d].symbol == *symbol && v == value && lo == min && hi == max && act == action
         };
-        if self.said.iter().flatten().any(same) {
+        if self.said.iter().flatten().chain(&self.said_more).any(same) {
             return;
         }
-        if let Some(free) = self.said.iter_mut().find(|k| k.is_none()) {
-            *free = Some((depth, value, min, max, action));
+        let key = (depth, value, min, max, action);
+        match self.said.iter_mut().find(|k| k.is_none()) {
+            Some(free) => *free = Some(key),
+            None => self.said_more.push(key),
         }
         (self.sink)(ChartWarning {
             chart: self.chart.id.clone(),
@@ -242,6 +246,7 @@ impl Chart {
             chart: self,
             sink,
             said: [None; REMEMBERED_WARNINGS],
+            said_more: Vec::new(),
             located: [None; REMEMBERED_AXES],
         };
         walk.eval(&self.data, 0, args).filter(|v| v.is_finite())
@@ -305,6 +310,50 @@ values = [0.0, 1.0, 2.0]
         assert!(k.warnings[0]
             .to_string()
             .contains("chart test-grid: p = -1 is outside the data (0 to 1): end value used"));
+    }
+
+    /// A family read outside every axis: each distinct warning is said once, however many
+    /// there are (more than a walk keeps in place).
+    #[test]
+    fn every_distinct_warning_is_said_once() {
+        let mut text = String::from(
+            r#"
+id = "test-family"
+title = "a 4-axis test family"
+output = { symbol = "z", name = "z", unit = "-" }
+source = { figure = "none", routine = "none", lines = "none" }
+"#,
+        );
+        for symbol in ["a", "b", "c"] {
+            text += &format!(
+                "[[axes]]\nsymbol = \"{symbol}\"\nname = \"{symbol}\"\nunit = \"-\"\n\
+                 below = \"clamp\"\nabove = \"quadratic\"\nvalues = [0.0, 1.0, 2.0]\n"
+            );
+        }
+        text += "[[axes]]\nsymbol = \"x\"\nname = \"x\"\nunit = \"-\"\n\
+                 below = \"clamp\"\nabove = \"clamp\"\n[data]\ncurves = [\n";
+        // 27 curves, each over its own range but the 13th and 14th over the same one.
+        for i in 0..27 {
+            let start = if i == 13 { 12 } else { i };
+            text += &format!(
+                "  {{ x = [{start}.0, {}.0], y = [0.0, 1.0] }},\n",
+                start + 10
+            );
+        }
+        text += "]\n";
+        let chart = parse_chart(&text, "test.toml").unwrap();
+        let q = chart.lookup(&[3.0, 3.0, 3.0, -1.0]);
+        assert!(q.value.is_some());
+        // a, b and c once each (b and c are read in 3 and 9 branches), x once per range.
+        let expected = 3 + 26;
+        assert!(
+            expected > REMEMBERED_WARNINGS,
+            "the test must overflow the walk's place"
+        );
+        assert_eq!(q.warnings.len(), expected, "{:#?}", q.warnings);
+        let distinct: std::collections::BTreeSet<String> =
+            q.warnings.iter().map(|w| w.to_string()).collect();
+        assert_eq!(distinct.len(), q.warnings.len());
     }
 
     #[test]

@@ -256,8 +256,7 @@ struct Reader {
 
 impl Reader {
     fn read(&mut self, id: &'static str, args: &[f64]) -> Result<f64, LowAspectRatioError> {
-        let chart =
-            charts::get_static(id).ok_or(LowAspectRatioError::MissingChart { chart: id })?;
+        let chart = charts::get(id).ok_or(LowAspectRatioError::MissingChart { chart: id })?;
         let warnings = &mut self.warnings;
         let value = chart.lookup_each(args, |w| {
             if !warnings.contains(&w) {

@@ -19,7 +19,7 @@ pub(crate) const SIX_A_D1: &str = "airfoil-6a-d1";
 /// The value of chart `id` at `args`, or `None` when `args` lie outside its data (every
 /// section chart refuses to extrapolate: a designation outside the table names no section).
 pub(crate) fn lookup(id: &'static str, args: &[f64]) -> Result<Option<f64>, SectionError> {
-    let chart = charts::get_static(id).ok_or(SectionError::MissingChart(id))?;
+    let chart = charts::get(id).ok_or(SectionError::MissingChart(id))?;
     Ok(chart.lookup(args).value)
 }
 

@@ -35,7 +35,7 @@ pub const ALL: [&str; 8] = [
 
 /// The chart `id`, or an error naming it.
 pub fn chart(id: &'static str) -> Result<&'static charts::Chart, BodyMethodError> {
-    charts::get_static(id).ok_or(BodyMethodError::MissingChart { chart: id })
+    charts::get(id).ok_or(BodyMethodError::MissingChart { chart: id })
 }
 
 /// Reads figure `id` at `args`, recording any excursion outside its data in `warnings`.

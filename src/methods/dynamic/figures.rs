@@ -61,7 +61,7 @@ pub fn read(
     args: &[f64],
     warnings: &mut Vec<DynamicWarning>,
 ) -> Result<f64, DynamicError> {
-    let chart = charts::get_static(id).ok_or(DynamicError::MissingChart { chart: id })?;
+    let chart = charts::get(id).ok_or(DynamicError::MissingChart { chart: id })?;
     let value = chart.lookup_each(args, |w| {
         let w = DynamicWarning::Chart(w);
         if !warnings.contains(&w) {

@@ -73,7 +73,7 @@ pub fn read(
     args: &[f64],
     warnings: &mut Vec<LateralWarning>,
 ) -> Result<f64, LateralError> {
-    let chart = charts::get_static(id).ok_or(LateralError::MissingChart { chart: id })?;
+    let chart = charts::get(id).ok_or(LateralError::MissingChart { chart: id })?;
     let value = chart.lookup_each(args, |w| {
         let w = LateralWarning::Chart(w);
         if !warnings.contains(&w) {

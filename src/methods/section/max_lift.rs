@@ -132,7 +132,7 @@ fn read(
     args: &[f64],
     warnings: &mut Vec<MaxLiftWarning>,
 ) -> Result<f64, MaxLiftError> {
-    let chart = charts::get_static(id).ok_or(MaxLiftError::Chart { chart: id })?;
+    let chart = charts::get(id).ok_or(MaxLiftError::Chart { chart: id })?;
     let value = chart.lookup_each(args, |w| warnings.push(MaxLiftWarning::Chart(w)));
     value.ok_or(MaxLiftError::Chart { chart: id })
 }

@@ -110,8 +110,10 @@ impl Default for SectionOptions {
 /// The method is a pure function of its inputs and the costliest step of a run (the Weber
 /// integration at every condition), while the build-up asks for the same section from several
 /// methods (wing, wing lateral, tails) at each flight condition. So the last few results are
-/// remembered per thread, keyed by the whole input compared exactly; a changed input (or a NaN
-/// in it, which never compares equal) is computed afresh.
+/// remembered per thread, keyed by the whole input compared exactly; a changed input is
+/// computed afresh. (A NaN among the shape's station values compares equal to the same shared
+/// values, so such a shape can be remembered; the method refuses it before computing anything,
+/// with the same error each time.)
 pub fn section_characteristics(
     shape: &SectionShape,
     conditions: &[SectionCondition],

@@ -27,7 +27,7 @@ pub fn read(
     args: &[f64],
     warnings: &mut Vec<TailWarning>,
 ) -> Result<f64, TailError> {
-    let chart = charts::get_static(id).ok_or(TailError::MissingChart { chart: id })?;
+    let chart = charts::get(id).ok_or(TailError::MissingChart { chart: id })?;
     let value = chart.lookup_each(args, |w| {
         let w = TailWarning::Chart(w);
         if !warnings.contains(&w) {

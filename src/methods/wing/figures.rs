@@ -123,7 +123,7 @@ pub fn read(
     args: &[f64],
     warnings: &mut Vec<WingWarning>,
 ) -> Result<f64, WingMethodError> {
-    let chart = charts::get_static(id).ok_or(WingMethodError::MissingChart { chart: id })?;
+    let chart = charts::get(id).ok_or(WingMethodError::MissingChart { chart: id })?;
     let value = chart.lookup_each(args, |w| {
         let w = WingWarning::Chart(w);
         if !warnings.contains(&w) {

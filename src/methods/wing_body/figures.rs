@@ -49,7 +49,7 @@ pub fn read_optional(
     args: &[f64],
     warnings: &mut Vec<WingBodyWarning>,
 ) -> Result<Option<f64>, WingBodyError> {
-    let chart = charts::get_static(id).ok_or(WingBodyError::MissingChart { chart: id })?;
+    let chart = charts::get(id).ok_or(WingBodyError::MissingChart { chart: id })?;
     let value = chart.lookup_each(args, |w| {
         let w = WingBodyWarning::Chart(w);
         if !warnings.contains(&w) {
