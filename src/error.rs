@@ -106,7 +106,11 @@ pub enum DeckProblem {
         found: f64,
         allow_zero: bool,
     },
-    #[error("{variable} = {found} {unit} is outside {min} to {max} {unit}")]
+    #[error(
+        "{variable} = {found}{} is outside {min} to {max}{}",
+        spaced(unit),
+        spaced(unit)
+    )]
     OutOfRange {
         variable: String,
         found: f64,
@@ -213,4 +217,13 @@ pub enum Error {
     },
     #[error("case {case}: {message}")]
     Compute { case: String, message: String },
+}
+
+/// A unit after a number: a space and the unit, or nothing for a pure number.
+fn spaced(unit: &str) -> String {
+    if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    }
 }

@@ -293,6 +293,27 @@ fn physical_checks() {
     }
 }
 
+/// CHSTAT is a station along the chord, a fraction of it: outside 0 to 1 the sweep
+/// conversions extrapolate the planform (CHSTAT = 1e10 gave CD ~ 1e81, unreported).
+#[test]
+fn chord_station_is_a_fraction_of_the_chord() {
+    for (chstat, bad) in [
+        ("1.0E10", true),
+        ("-0.5", true),
+        ("1.0", false),
+        ("0.25", false),
+    ] {
+        let d = read(&format!(
+            "{MINIMAL} $HTPLNF CHRDR=0.18, CHRDTP=0.14, SSPN=0.195, SSPNE=0.18, CHSTAT={chstat}$\n"
+        ));
+        let msgs: Vec<String> = errors(&d).iter().map(|e| e.problem.to_string()).collect();
+        let found = msgs
+            .iter()
+            .any(|m| m.contains("CHSTAT(1) =") && m.ends_with("is outside 0 to 1"));
+        assert_eq!(found, bad, "CHSTAT={chstat}: {msgs:?}");
+    }
+}
+
 #[test]
 fn neither_mach_nor_velocity() {
     let d = read(" $FLTCON NALPHA=1.0, ALSCHD(1)=0.0, NALT=1.0, ALT(1)=0.0$\n $SYNTHS XCG=1.0$\n");

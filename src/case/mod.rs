@@ -794,6 +794,9 @@ impl<'a> Checks<'a> {
 const ATMOSPHERE_RANGE_M: (f64, f64) = (-5000.0, 700_000.0);
 /// Mach numbers beyond which no DATCOM method (hypersonic ones included) applies.
 const MACH_RANGE: (f64, f64) = (0.0, 100.0);
+/// A station along the chord as a fraction of it (CHSTAT: the chord station of the sweep
+/// angle SAVSI/SAVSO), from the leading to the trailing edge.
+const CHORD_FRACTION: (f64, f64) = (0.0, 1.0);
 
 impl Case {
     /// A copy of the case with `sections` in place of its section inputs: what a method that
@@ -1182,6 +1185,7 @@ impl Case {
             c.positive(name, "SSPN");
             c.positive(name, "SSPNE");
             c.non_negative(name, "CHRDTP");
+            c.range(name, "CHSTAT", CHORD_FRACTION, self.dim);
             if p.chrdr.is_none() {
                 c.push(
                     Severity::Error,
