@@ -995,6 +995,73 @@ pub fn run_case(case: &Case) -> CaseResults {
     results
 }
 
+/// Leaves none of a page's coefficients infinite or NaN: each such value becomes none (not
+/// computed, as the original's NA), and the warning returned says which, where. A method's
+/// inputs that pass the deck's checks can still overflow (a body radius of 1e300, a chord of
+/// 1e-30 beside a span of 3).
+fn without_non_finite(entry: &mut ConditionResults) -> Option<String> {
+    let alpha = &entry.alpha_deg;
+    let mut found: Vec<String> = Vec::new();
+    let mut scan = |name: &str, column: &mut Vec<Option<f64>>| {
+        let mut at = Vec::new();
+        for (k, v) in column.iter_mut().enumerate() {
+            if v.is_some_and(|x| !x.is_finite()) {
+                *v = None;
+                at.push(
+                    alpha
+                        .get(k)
+                        .map_or_else(|| format!("row {}", k + 1), |a| format!("{a}")),
+                );
+            }
+        }
+        if !at.is_empty() {
+            found.push(format!("{name} at alpha {}", at.join(", ")));
+        }
+    };
+    let s = &mut entry.static_coefficients;
+    for (name, column) in [
+        ("CD", &mut s.cd),
+        ("CL", &mut s.cl),
+        ("CM", &mut s.cm),
+        ("CN", &mut s.cn),
+        ("CA", &mut s.ca),
+        ("XCP", &mut s.xcp),
+        ("CLA", &mut s.cla),
+        ("CMA", &mut s.cma),
+        ("CYB", &mut s.cyb),
+        ("CNB", &mut s.cnb),
+        ("CLB", &mut s.clb),
+    ] {
+        scan(name, column);
+    }
+    if let Some(d) = entry.dynamic.as_mut() {
+        for (name, column) in DYNAMIC_NAMES.into_iter().zip([
+            &mut d.clq,
+            &mut d.cmq,
+            &mut d.clad,
+            &mut d.cmad,
+            &mut d.clp,
+            &mut d.cyp,
+            &mut d.cnp,
+            &mut d.cnr,
+            &mut d.clr,
+        ]) {
+            scan(name, column);
+        }
+        if let Some(cyr) = d.cyr.as_mut() {
+            scan("CYR", cyr);
+        }
+    }
+    (!found.is_empty()).then(|| {
+        format!(
+            "Mach {:.3}, {}: not finite, not computed: {}",
+            entry.condition.mach,
+            entry.configuration,
+            found.join("; ")
+        )
+    })
+}
+
 fn compute_case(case: &Case) -> CaseResults {
     let mut warnings = Vec::new();
     let mut conditions = Vec::new();
@@ -1125,6 +1192,9 @@ fn compute_case(case: &Case) -> CaseResults {
                             wing_section,
                         ));
                     }
+                }
+                if let Some(w) = without_non_finite(&mut entry) {
+                    warnings.push(w);
                 }
                 conditions.push(entry);
             }

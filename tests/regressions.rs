@@ -21,6 +21,48 @@ fn no_non_finite(d: &datcom::Deck) {
     assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
     let csv = datcom::report::csv::to_string(&r);
     assert!(!csv.contains("NaN") && !csv.contains("inf"), "{csv}");
+    let listing = datcom::report::for006::to_string(&r);
+    assert!(
+        !listing.contains("NaN") && !listing.contains("inf"),
+        "{listing}"
+    );
+}
+
+/// Fuzzing found NaN printed in the CD column of a vertical tail alone on a zero reference
+/// area (the deck's error said so, the page did not), and `inf` / `NaN` in the PART pages for
+/// a body radius or a tip chord of 1e300. Coefficients that are not finite are now not
+/// computed, with a warning naming them; number fields show NA.
+#[test]
+fn non_finite_values_are_not_printed() {
+    let vertical_tail = read(
+        "BUILD\n $FLTCON NMACH=1.0,MACH(1)=0.6,NALPHA=1.0,ALSCHD(1)=-2.0,RNNUB(1)=2.28E6$\n \
+         $OPTINS SREF=0.0,CBARR=0.822,BLREF=3.00$\n $SYNTHS XCG=2.6,XV=3.34$\n \
+         $VTPLNF CHRDTP=0.42,SSPNE=0.63,SSPN=0.849,CHRDR=1.02,SAVSI=28.1,CHSTAT=0.25$\n \
+         $VTSCHR TOVC=0.09,XOVC=0.4,CLALPA(1)=0.141,LERI=0.0075$\n",
+    );
+    no_non_finite(&vertical_tail);
+    let r = datcom::run(&vertical_tail);
+    assert!(
+        r.cases[0]
+            .warnings
+            .iter()
+            .any(|w| w.contains("not finite, not computed: CD at alpha -2")),
+        "{:?}",
+        r.cases[0].warnings
+    );
+    let body = read(
+        "PART\n $FLTCON NMACH=1.0,MACH(1)=0.4,NALT=1.0,ALT(1)=0.0,NALPHA=2.0,ALSCHD(1)=0.0,4.0$\n \
+         $OPTINS SREF=320.8,CBARR=6.75,BLREF=51.7$\n $SYNTHS XCG=21.9$\n \
+         $BODY NX=3.0,X(1)=0.0,2.7,44.8,R(1)=0.0,1.0E300,0.0$\n",
+    );
+    no_non_finite(&body);
+    let wing = read(
+        "PART\n $FLTCON NMACH=1.0,MACH(1)=0.4,NALPHA=1.0,ALSCHD(1)=0.0,RNNUB(1)=1.0E6$\n \
+         $SYNTHS XCG=10.0,XW=5.0$\n \
+         $WGPLNF CHRDR=4.3,CHRDTP=1.0E300,SSPN=20.0,SSPNE=20.0,SAVSI=0.0,CHSTAT=0.25$\n\
+         NACA W 4 0012\n",
+    );
+    no_non_finite(&wing);
 }
 
 #[test]

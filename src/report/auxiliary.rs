@@ -187,9 +187,13 @@ pub fn view(a: &AuxiliaryOutput, case: &CaseResults) -> AuxiliaryJson {
     }
 }
 
-/// Fortran `Ew.d` without a scale factor: `0.2817E+03`, right-aligned in `w`.
+/// Fortran `Ew.d` without a scale factor: `0.2817E+03`, right-aligned in `w`; NA for a value
+/// that is not finite.
 fn fortran_e0(v: f64, d: usize, w: usize) -> String {
-    if v == 0.0 || !v.is_finite() {
+    if !v.is_finite() {
+        return super::text::not_available(w);
+    }
+    if v == 0.0 {
         return format!("{:>w$}", format!("0.{}E+00", "0".repeat(d)));
     }
     let s = format!("{:.*E}", d.saturating_sub(1), v.abs());

@@ -9,8 +9,18 @@ use crate::deck::cards::{DerivUnit, Surface};
 use crate::deck::schema::Dimension as D;
 use crate::results::{CaseResults, ConditionResults, Results};
 
-/// Fortran `1PEw.d`: one digit before the point, `d` after, exponent with sign and two digits.
+/// What a number field shows for a value that is not finite: not available, as the original
+/// marks a value it does not give (the results say why in their warnings).
+pub(crate) fn not_available(w: usize) -> String {
+    format!("{:>w$}", "NA")
+}
+
+/// Fortran `1PEw.d`: one digit before the point, `d` after, exponent with sign and two digits;
+/// NA for a value that is not finite.
 pub fn fortran_e(v: f64, d: usize, w: usize) -> String {
+    if !v.is_finite() {
+        return not_available(w);
+    }
     if v == 0.0 {
         return format!("{:>w$}", format!("{:.d$}E+00", 0.0));
     }
@@ -21,8 +31,12 @@ pub fn fortran_e(v: f64, d: usize, w: usize) -> String {
     format!("{:>w$}", format!("{mant}E{sign}{:02}", e.abs()))
 }
 
-/// Fortran `Fw.d`, right-aligned; `******` when it does not fit, as the original prints.
+/// Fortran `Fw.d`, right-aligned; `******` when it does not fit, as the original prints; NA for
+/// a value that is not finite.
 pub fn fortran_f(v: f64, d: usize, w: usize) -> String {
+    if !v.is_finite() {
+        return not_available(w);
+    }
     let s = format!("{v:>w$.d$}");
     if s.len() > w {
         "*".repeat(w)
@@ -318,5 +332,9 @@ mod tests {
         assert_eq!(fortran_e(-0.0006870, 3, 10), "-6.870E-04");
         assert_eq!(fortran_f(0.158, 3, 6), " 0.158");
         assert_eq!(fortran_f(123456.0, 3, 6), "******");
+        for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            assert_eq!(fortran_e(v, 4, 10), "        NA");
+            assert_eq!(fortran_f(v, 3, 6), "    NA");
+        }
     }
 }
