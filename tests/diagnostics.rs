@@ -314,6 +314,36 @@ fn chord_station_is_a_fraction_of_the_chord() {
     }
 }
 
+/// A body whose lower contour rises above its upper one has a negative height there: the
+/// sideslip charts were read at NaN (found by fuzzing). Likewise negative $LARWB areas.
+#[test]
+fn contours_and_lifting_body_areas_are_checked() {
+    let body = |zl5: &str| {
+        read(&format!(
+            "{MINIMAL} $BODY NX=3.0, X(1)=0.0,1.0,2.0, ZU(1)=0.0,0.5,0.0, ZL(1)=0.0,{zl5},0.0$\n"
+        ))
+    };
+    let crossing = |d: &datcom::Deck| {
+        errors(d).iter().any(|e| {
+            e.problem
+                .to_string()
+                .contains("ZL(2)=0.7 is above ZU(2)=0.5")
+        })
+    };
+    assert!(crossing(&body("0.7")));
+    assert!(!crossing(&body("-0.5")), "{:?}", errors(&body("-0.5")));
+    let larwb = read(&format!(
+        "{MINIMAL} $LARWB ZB=0.0, SREF=10.0, L=5.0, SBASE=-1.0, SWET=40.0$\n"
+    ));
+    assert!(
+        errors(&larwb)
+            .iter()
+            .any(|e| e.problem.to_string().contains("SBASE must not be negative")),
+        "{:?}",
+        errors(&larwb)
+    );
+}
+
 #[test]
 fn neither_mach_nor_velocity() {
     let d = read(" $FLTCON NALPHA=1.0, ALSCHD(1)=0.0, NALT=1.0, ALT(1)=0.0$\n $SYNTHS XCG=1.0$\n");

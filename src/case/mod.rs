@@ -1252,6 +1252,34 @@ impl Case {
             for var in ["R", "S", "P"] {
                 c.non_negative("BODY", var);
             }
+            let upper: Vec<(usize, f64)> = c.values("BODY", "ZU").collect();
+            let lower: Vec<(usize, f64)> = c.values("BODY", "ZL").collect();
+            let crossing = upper.iter().find_map(|&(i, zu)| {
+                lower
+                    .iter()
+                    .find(|&&(j, zl)| j == i && zl > zu)
+                    .map(|&(_, zl)| (i, zu, zl))
+            });
+            if let Some((i, zu, zl)) = crossing {
+                c.push(
+                    Severity::Error,
+                    "BODY",
+                    Some("ZL"),
+                    format!(
+                        "the lower contour is above the upper one at station {i}: ZL({i})={zl} is above ZU({i})={zu}"
+                    ),
+                    None,
+                );
+            }
+        }
+        if self.larwb.is_some() {
+            c.positive("LARWB", "SREF");
+            c.positive("LARWB", "L");
+            for var in [
+                "SFRONT", "SWET", "PERBAS", "SBASE", "HB", "BB", "SBS", "SBSLB",
+            ] {
+                c.non_negative("LARWB", var);
+            }
         }
     }
 
