@@ -217,6 +217,14 @@ impl fmt::Display for ChartWarning {
             Outside::Quadratic => "extrapolated quadratically",
             Outside::Refuse => "no value",
         };
+        if !self.value.is_finite() {
+            // A query the walk refused before reading the chart (lookup_each).
+            return write!(
+                f,
+                "chart {}: {} = {} is not finite: no value",
+                self.chart, self.variable, self.value
+            );
+        }
         write!(
             f,
             "chart {}: {} = {} is outside the data ({} to {}): {what}",
@@ -226,6 +234,28 @@ impl fmt::Display for ChartWarning {
             self.min,
             self.max
         )
+    }
+}
+
+/// The arguments of a lookup of chart `id` as a person reads them: `mach = 0.6, t_over_c =
+/// inf`, each value to four significant digits (`[0.6, inf]` when the chart is not known or
+/// the count does not match its axes).
+pub fn describe_query(id: &str, args: &[f64]) -> String {
+    match get(id).filter(|c| c.axes.len() == args.len()) {
+        Some(c) => c
+            .axes
+            .iter()
+            .zip(args)
+            .map(|(a, &v)| format!("{} = {}", a.symbol, Query(v)))
+            .collect::<Vec<_>>()
+            .join(", "),
+        None => format!(
+            "[{}]",
+            args.iter()
+                .map(|&v| Query(v).to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
     }
 }
 
@@ -466,7 +496,7 @@ pub fn invalid() -> &'static [(String, ChartError)] {
 
 #[cfg(test)]
 mod tests {
-    use super::{get, Query, CHART_IDS};
+    use super::{describe_query, get, Query, CHART_IDS};
 
     /// A chart asked for by a fixed id and by the same id in other text is the same chart, on
     /// the first asking and the next.
@@ -495,6 +525,35 @@ mod tests {
         text.make_ascii_uppercase();
         assert_ne!(&*text, *id);
         assert_eq!(get(text).map(|c| c.id.as_str()), None, "{text}");
+    }
+
+    #[test]
+    fn a_query_is_described_by_its_axes() {
+        let id = CHART_IDS[0];
+        let chart = get(id).expect("the first chart");
+        let args: Vec<f64> = (0..chart.axes.len()).map(|k| 0.5 + k as f64).collect();
+        let mut infinite = args.clone();
+        infinite[0] = f64::INFINITY;
+        let described = describe_query(id, &infinite);
+        assert!(
+            described.starts_with(&format!("{} = inf", chart.axes[0].symbol)),
+            "{described}"
+        );
+        assert_eq!(described.matches(" = ").count(), chart.axes.len());
+        // Not a chart, or not its number of arguments: the values alone.
+        assert_eq!(
+            describe_query("no-such-chart", &[0.5, f64::NAN]),
+            "[0.5, NaN]"
+        );
+        let warning = chart.lookup(&infinite).warnings;
+        assert_eq!(warning.len(), 1);
+        assert!(
+            warning[0]
+                .to_string()
+                .ends_with("= inf is not finite: no value"),
+            "{}",
+            warning[0]
+        );
     }
 
     #[test]

@@ -131,7 +131,10 @@ pub enum LowAspectRatioError {
     Degenerate { reason: String },
     #[error("chart {chart} is not embedded or not valid")]
     MissingChart { chart: &'static str },
-    #[error("chart {chart} gives no value at {args:?}")]
+    #[error(
+        "chart {chart} gives no value at {}",
+        crate::charts::describe_query(chart, args)
+    )]
     ChartNoValue { chart: &'static str, args: Vec<f64> },
     #[error("skin friction: {0}")]
     SkinFriction(BodyMethodError),

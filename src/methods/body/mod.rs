@@ -129,7 +129,10 @@ pub enum BodyMethodError {
     Reynolds { reynolds: f64 },
     #[error("chart {chart} is not embedded or not valid")]
     MissingChart { chart: &'static str },
-    #[error("chart {chart} gives no value at {args:?}")]
+    #[error(
+        "chart {chart} gives no value at {}",
+        crate::charts::describe_query(chart, args)
+    )]
     ChartNoValue { chart: &'static str, args: Vec<f64> },
 }
 
