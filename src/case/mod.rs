@@ -766,6 +766,32 @@ impl<'a> Checks<'a> {
         self.sign(card, var, false);
     }
 
+    /// An angle, deg, that the methods divide by the cosine of (a sweep, a dihedral, an
+    /// incidence): at ±90° and beyond they give no meaningful number. (Not the angles of
+    /// attack: body-alone decks run to 90° and beyond, and the body methods take them.)
+    fn acute(&mut self, card: &str, var: &str, what: &str) {
+        if let Some((i, found)) = self
+            .values(card, var)
+            .find(|(_, x)| x.abs() >= RIGHT_ANGLE_DEG)
+        {
+            let scalar = schema::table(card)
+                .and_then(|s| s.var(var))
+                .is_some_and(|v| v.len == 1);
+            let name = if scalar {
+                var.to_string()
+            } else {
+                format!("{var}({i})")
+            };
+            self.push(
+                Severity::Error,
+                card,
+                Some(var),
+                format!("{name} = {found} deg: {what} must lie between -90 and 90 deg"),
+                None,
+            );
+        }
+    }
+
     fn non_negative(&mut self, card: &str, var: &str) {
         self.sign(card, var, true);
     }
@@ -778,8 +804,15 @@ impl<'a> Checks<'a> {
         let lo = units::from_si(min, dim, d);
         let hi = units::from_si(max, dim, d);
         if let Some((i, found)) = self.values(card, var).find(|(_, x)| !(lo..=hi).contains(x)) {
+            let scalar = schema::table(card)
+                .and_then(|s| s.var(var))
+                .is_some_and(|v| v.len == 1);
             let problem = DeckProblem::OutOfRange {
-                variable: format!("{var}({i})"),
+                variable: if scalar {
+                    var.to_string()
+                } else {
+                    format!("{var}({i})")
+                },
                 found,
                 min: lo,
                 max: hi,
@@ -794,6 +827,8 @@ impl<'a> Checks<'a> {
 const ATMOSPHERE_RANGE_M: (f64, f64) = (-5000.0, 700_000.0);
 /// Mach numbers beyond which no DATCOM method (hypersonic ones included) applies.
 const MACH_RANGE: (f64, f64) = (0.0, 100.0);
+/// The angle at which the methods' cosines vanish, deg.
+const RIGHT_ANGLE_DEG: f64 = 90.0;
 /// A station along the chord as a fraction of it (CHSTAT: the chord station of the sweep
 /// angle SAVSI/SAVSO), from the leading to the trailing edge.
 const CHORD_FRACTION: (f64, f64) = (0.0, 1.0);
@@ -1171,6 +1206,14 @@ impl Case {
                 }
             }
         }
+        c.acute("SYNTHS", "ALIW", "the wing's incidence");
+        c.acute("SYNTHS", "ALIH", "the horizontal tail's incidence");
+        for name in ["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"] {
+            // Fractions of the chord: the thickness ratio and its station.
+            c.range(name, "TOVC", CHORD_FRACTION, self.dim);
+            c.range(name, "XOVC", CHORD_FRACTION, self.dim);
+            c.non_negative(name, "DELTAY");
+        }
         c.positive("OPTINS", "SREF");
         c.positive("OPTINS", "CBARR");
         c.positive("OPTINS", "BLREF");
@@ -1186,6 +1229,15 @@ impl Case {
             c.positive(name, "SSPNE");
             c.non_negative(name, "CHRDTP");
             c.range(name, "CHSTAT", CHORD_FRACTION, self.dim);
+            c.non_negative(name, "CHRDBP");
+            for (var, what) in [
+                ("SAVSI", "a sweep angle"),
+                ("SAVSO", "a sweep angle"),
+                ("DHDADI", "a dihedral angle"),
+                ("DHDADO", "a dihedral angle"),
+            ] {
+                c.acute(name, var, what);
+            }
             if p.chrdr.is_none() {
                 c.push(
                     Severity::Error,
