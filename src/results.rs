@@ -87,6 +87,23 @@ impl StaticCoefficients {
             clb: nones(n),
         }
     }
+
+    /// The columns in page order with their names on the original's pages, to change.
+    pub fn columns_mut(&mut self) -> [(&'static str, &mut Vec<Option<f64>>); 11] {
+        [
+            ("CD", &mut self.cd),
+            ("CL", &mut self.cl),
+            ("CM", &mut self.cm),
+            ("CN", &mut self.cn),
+            ("CA", &mut self.ca),
+            ("XCP", &mut self.xcp),
+            ("CLA", &mut self.cla),
+            ("CMA", &mut self.cma),
+            ("CYB", &mut self.cyb),
+            ("CNB", &mut self.cnb),
+            ("CLB", &mut self.clb),
+        ]
+    }
 }
 
 impl DynamicDerivatives {
@@ -148,6 +165,21 @@ impl DynamicDerivatives {
             (DYNAMIC_NAMES[6], &self.cnp),
             (DYNAMIC_NAMES[7], &self.cnr),
             (DYNAMIC_NAMES[8], &self.clr),
+        ]
+    }
+
+    /// [`DynamicDerivatives::columns`], to change.
+    pub fn columns_mut(&mut self) -> [(&'static str, &mut Vec<Option<f64>>); 9] {
+        [
+            (DYNAMIC_NAMES[0], &mut self.clq),
+            (DYNAMIC_NAMES[1], &mut self.cmq),
+            (DYNAMIC_NAMES[2], &mut self.clad),
+            (DYNAMIC_NAMES[3], &mut self.cmad),
+            (DYNAMIC_NAMES[4], &mut self.clp),
+            (DYNAMIC_NAMES[5], &mut self.cyp),
+            (DYNAMIC_NAMES[6], &mut self.cnp),
+            (DYNAMIC_NAMES[7], &mut self.cnr),
+            (DYNAMIC_NAMES[8], &mut self.clr),
         ]
     }
 }
@@ -1018,34 +1050,11 @@ fn without_non_finite(entry: &mut ConditionResults) -> Option<String> {
             found.push(format!("{name} at alpha {}", at.join(", ")));
         }
     };
-    let s = &mut entry.static_coefficients;
-    for (name, column) in [
-        ("CD", &mut s.cd),
-        ("CL", &mut s.cl),
-        ("CM", &mut s.cm),
-        ("CN", &mut s.cn),
-        ("CA", &mut s.ca),
-        ("XCP", &mut s.xcp),
-        ("CLA", &mut s.cla),
-        ("CMA", &mut s.cma),
-        ("CYB", &mut s.cyb),
-        ("CNB", &mut s.cnb),
-        ("CLB", &mut s.clb),
-    ] {
+    for (name, column) in entry.static_coefficients.columns_mut() {
         scan(name, column);
     }
     if let Some(d) = entry.dynamic.as_mut() {
-        for (name, column) in DYNAMIC_NAMES.into_iter().zip([
-            &mut d.clq,
-            &mut d.cmq,
-            &mut d.clad,
-            &mut d.cmad,
-            &mut d.clp,
-            &mut d.cyp,
-            &mut d.cnp,
-            &mut d.cnr,
-            &mut d.clr,
-        ]) {
+        for (name, column) in d.columns_mut() {
             scan(name, column);
         }
         if let Some(cyr) = d.cyr.as_mut() {

@@ -140,31 +140,11 @@ fn for006_pages_read_back_to_our_numbers() {
                     .map(|i| Some(0.01 * (k as f64 + 1.0) + 0.001 * i as f64))
                     .collect::<Vec<_>>()
             };
-            let s = &mut c.static_coefficients;
-            for (k, col) in [
-                &mut s.cd, &mut s.cl, &mut s.cm, &mut s.cn, &mut s.ca, &mut s.xcp, &mut s.cla,
-                &mut s.cma, &mut s.cyb, &mut s.cnb, &mut s.clb,
-            ]
-            .into_iter()
-            .enumerate()
-            {
+            for (k, (_, col)) in c.static_coefficients.columns_mut().into_iter().enumerate() {
                 *col = val(k);
             }
             if let Some(d) = &mut c.dynamic {
-                for (k, col) in [
-                    &mut d.clq,
-                    &mut d.cmq,
-                    &mut d.clad,
-                    &mut d.cmad,
-                    &mut d.clp,
-                    &mut d.cyp,
-                    &mut d.cnp,
-                    &mut d.cnr,
-                    &mut d.clr,
-                ]
-                .into_iter()
-                .enumerate()
-                {
+                for (k, (_, col)) in d.columns_mut().into_iter().enumerate() {
                     *col = val(20 + k);
                 }
                 // A column without a DATCOM method: NDM in the first row.
