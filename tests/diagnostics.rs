@@ -389,6 +389,41 @@ fn right_angles_and_chord_fractions_are_errors() {
     ));
 }
 
+/// Angles of attack: none beyond ±180 deg (15000 was read); from ±90 deg with a lifting
+/// surface a warning (CM reached 1e34 at -90 deg, found by fuzzing), none for a body alone.
+#[test]
+fn angles_of_attack_beyond_a_right_angle() {
+    let deck = |alpha: &str, wing: bool| {
+        let planform = if wing {
+            " $WGPLNF CHRDR=2.0, SSPN=5.0, SSPNE=4.0$\n"
+        } else {
+            ""
+        };
+        read(&format!(
+            " $FLTCON NMACH=1.0, MACH(1)=0.3, NALPHA=2.0, ALSCHD(1)=0.0,{alpha}$\n $SYNTHS XCG=1.0$\n $BODY NX=3.0, X(1)=0.0,1.0,2.0, R(1)=0.0,0.2,0.0$\n{planform}"
+        ))
+    };
+    let said = |d: &datcom::Deck, severity: Severity, text: &str| {
+        d.diagnostics
+            .iter()
+            .any(|x| x.severity == severity && x.problem.to_string().contains(text))
+    };
+    assert!(said(
+        &deck("15000.0", false),
+        Severity::Error,
+        "ALSCHD(2) = 15000 deg"
+    ));
+    assert!(said(
+        &deck("-90.0", true),
+        Severity::Warning,
+        "ALSCHD(2) = -90 deg"
+    ));
+    let body_alone = deck("135.0", false);
+    assert!(!said(&body_alone, Severity::Warning, "ALSCHD"));
+    assert!(errors(&body_alone).is_empty(), "{:?}", errors(&body_alone));
+    assert!(!said(&deck("89.0", true), Severity::Warning, "ALSCHD"));
+}
+
 #[test]
 fn neither_mach_nor_velocity() {
     let d = read(" $FLTCON NALPHA=1.0, ALSCHD(1)=0.0, NALT=1.0, ALT(1)=0.0$\n $SYNTHS XCG=1.0$\n");

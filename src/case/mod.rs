@@ -796,6 +796,38 @@ impl<'a> Checks<'a> {
         self.sign(card, var, true);
     }
 
+    /// The angles of attack: beyond ±180° none is meant; from ±90° the lifting-surface
+    /// methods (which divide by cos α) give no meaningful number, although the body methods
+    /// do (body-alone decks run to 90° and beyond).
+    fn angles_of_attack(&mut self, lifting_surfaces: bool) {
+        let (card, var) = ("FLTCON", "ALSCHD");
+        if let Some((i, found)) = self
+            .values(card, var)
+            .find(|(_, a)| a.abs() > HALF_TURN_DEG)
+        {
+            self.push(
+                Severity::Error,
+                card,
+                Some(var),
+                format!(
+                    "{var}({i}) = {found} deg: an angle of attack lies between -180 and 180 deg"
+                ),
+                None,
+            );
+        } else if let Some((i, found)) = self
+            .values(card, var)
+            .find(|(_, a)| lifting_surfaces && a.abs() >= RIGHT_ANGLE_DEG)
+        {
+            self.push(
+                Severity::Warning,
+                card,
+                Some(var),
+                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at 90 deg and beyond (only the body's do)"),
+                None,
+            );
+        }
+    }
+
     /// Values outside `[min, max]` given in SI, reported in the deck's units.
     fn range(&mut self, card: &str, var: &str, (min, max): (f64, f64), dim: Dim) {
         let d = schema::table(card)
@@ -829,6 +861,8 @@ const ATMOSPHERE_RANGE_M: (f64, f64) = (-5000.0, 700_000.0);
 const MACH_RANGE: (f64, f64) = (0.0, 100.0);
 /// The angle at which the methods' cosines vanish, deg.
 const RIGHT_ANGLE_DEG: f64 = 90.0;
+/// The largest angle of attack in magnitude, deg.
+const HALF_TURN_DEG: f64 = 180.0;
 /// A station along the chord as a fraction of it (CHSTAT: the chord station of the sweep
 /// angle SAVSI/SAVSO), from the leading to the trailing edge.
 const CHORD_FRACTION: (f64, f64) = (0.0, 1.0);
@@ -1206,6 +1240,9 @@ impl Case {
                 }
             }
         }
+        c.angles_of_attack(
+            self.wing.is_some() || self.horizontal_tail.is_some() || self.vertical_tail.is_some(),
+        );
         c.acute("SYNTHS", "ALIW", "the wing's incidence");
         c.acute("SYNTHS", "ALIH", "the horizontal tail's incidence");
         for name in ["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"] {
