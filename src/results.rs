@@ -342,8 +342,9 @@ pub fn planform_area_and_mac(p: &Planform) -> Option<(f64, f64)> {
 /// The original's configuration line for the body alone.
 pub const BODY_ALONE: &str = "DATCOM BODY ALONE CONFIGURATION";
 
-/// Moves the longitudinal columns of a method's result (fields cd, cl, cm, cn, ca, xcp,
-/// cla_per_rad, cma_per_rad, as every static method names them) into a page's coefficients.
+/// A page's coefficients made of the longitudinal columns of a method's result (fields cd, cl,
+/// cm, cn, ca, xcp, cla_per_rad, cma_per_rad, as every static method names them), moved, and
+/// sideslip columns of `$n` rows not computed yet.
 macro_rules! longitudinal {
     ($result:expr, $n:expr) => {{
         let r = $result;

@@ -744,17 +744,30 @@ impl<'a> Checks<'a> {
             .filter_map(|(i, x)| x.map(|x| (i + 1, x)))
     }
 
+    /// The variable is a scalar in the schema (named without an index in messages).
+    fn is_scalar(card: &str, var: &str) -> bool {
+        schema::table(card)
+            .and_then(|s| s.var(var))
+            .is_some_and(|v| v.len == 1)
+    }
+
+    /// How a message names element `i` (1-based) of `var`: `SAVSI` for a scalar, `X(3)`.
+    fn element(card: &str, var: &str, i: usize) -> String {
+        if Self::is_scalar(card, var) {
+            var.to_string()
+        } else {
+            format!("{var}({i})")
+        }
+    }
+
     fn sign(&mut self, card: &str, var: &str, allow_zero: bool) {
         let bad = self
             .values(card, var)
             .find(|(_, x)| if allow_zero { *x < 0.0 } else { *x <= 0.0 });
         if let Some((i, found)) = bad {
-            let scalar = schema::table(card)
-                .and_then(|s| s.var(var))
-                .is_some_and(|v| v.len == 1);
             let problem = DeckProblem::NotPositive {
                 variable: var.to_string(),
-                index: (!scalar).then_some(i),
+                index: (!Self::is_scalar(card, var)).then_some(i),
                 found,
                 allow_zero,
             };
@@ -774,19 +787,14 @@ impl<'a> Checks<'a> {
             .values(card, var)
             .find(|(_, x)| x.abs() >= RIGHT_ANGLE_DEG)
         {
-            let scalar = schema::table(card)
-                .and_then(|s| s.var(var))
-                .is_some_and(|v| v.len == 1);
-            let name = if scalar {
-                var.to_string()
-            } else {
-                format!("{var}({i})")
-            };
+            let name = Self::element(card, var, i);
             self.push(
                 Severity::Error,
                 card,
                 Some(var),
-                format!("{name} = {found} deg: {what} must lie between -90 and 90 deg"),
+                format!(
+                    "{name} = {found} deg: {what} must lie between -{RIGHT_ANGLE_DEG} and {RIGHT_ANGLE_DEG} deg"
+                ),
                 None,
             );
         }
@@ -810,7 +818,7 @@ impl<'a> Checks<'a> {
                 card,
                 Some(var),
                 format!(
-                    "{var}({i}) = {found} deg: an angle of attack lies between -180 and 180 deg"
+                    "{var}({i}) = {found} deg: an angle of attack lies between -{HALF_TURN_DEG} and {HALF_TURN_DEG} deg"
                 ),
                 None,
             );
@@ -822,7 +830,7 @@ impl<'a> Checks<'a> {
                 Severity::Warning,
                 card,
                 Some(var),
-                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at 90 deg and beyond (only the body's do)"),
+                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at {RIGHT_ANGLE_DEG} deg and beyond (only the body's do)"),
                 None,
             );
         }
@@ -836,15 +844,8 @@ impl<'a> Checks<'a> {
         let lo = units::from_si(min, dim, d);
         let hi = units::from_si(max, dim, d);
         if let Some((i, found)) = self.values(card, var).find(|(_, x)| !(lo..=hi).contains(x)) {
-            let scalar = schema::table(card)
-                .and_then(|s| s.var(var))
-                .is_some_and(|v| v.len == 1);
             let problem = DeckProblem::OutOfRange {
-                variable: if scalar {
-                    var.to_string()
-                } else {
-                    format!("{var}({i})")
-                },
+                variable: Self::element(card, var, i),
                 found,
                 min: lo,
                 max: hi,
@@ -863,8 +864,9 @@ const MACH_RANGE: (f64, f64) = (0.0, 100.0);
 const RIGHT_ANGLE_DEG: f64 = 90.0;
 /// The largest angle of attack in magnitude, deg.
 const HALF_TURN_DEG: f64 = 180.0;
-/// A station along the chord as a fraction of it (CHSTAT: the chord station of the sweep
-/// angle SAVSI/SAVSO), from the leading to the trailing edge.
+/// A station or length along the chord as a fraction of it, from the leading to the trailing
+/// edge: CHSTAT (the chord station of the sweep angles SAVSI/SAVSO), a section's thickness
+/// ratio TOVC and the station XOVC of its greatest thickness.
 const CHORD_FRACTION: (f64, f64) = (0.0, 1.0);
 
 impl Case {
