@@ -496,3 +496,35 @@ fn values_beyond_capacity_are_reported_not_stored() {
         case.namelists["BODY"].get("R")
     );
 }
+
+/// A section that cannot be made (coordinates that stop short of the trailing edge, a NACA
+/// designation that names no section) is an error of `check`, at the variable or card; before,
+/// only the run said so, in a warning, and the deck checked clean.
+#[test]
+fn sections_that_cannot_be_made_are_errors_where_they_are_given() {
+    let planform = " $WGPLNF CHRDR=2.0, SSPN=5.0, SSPNE=5.0, CHRDTP=1.0$\n";
+    let user = format!(
+        "{MINIMAL}{planform} $WGSCHR TYPEIN=1.0, NPTS=3.0,\n  XCORD=0.0,0.5,0.98, YUPPER=0.0,0.05,0.0, YLOWER=0.0,-0.05,0.0$\n"
+    );
+    let d = read(&user);
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!((e[0].line, e[0].column), (5, 3));
+    assert_eq!(e[0].card.as_deref(), Some("WGSCHR"));
+    assert_eq!(e[0].variable.as_deref(), Some("XCORD"));
+    assert!(
+        e[0].to_string()
+            .contains("XCORD(3) = 0.98: the last station is the trailing edge, 1"),
+        "{}",
+        e[0]
+    );
+    // The same table ending at 1 is clean.
+    assert!(errors(&read(&user.replace("0.98", "1.0"))).is_empty());
+
+    let d = read(&format!("{MINIMAL}{planform}NACA-W-5-99912\n"));
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!((e[0].line, e[0].card.as_deref()), (4, Some("NACA")));
+    assert!(e[0].to_string().contains("designation `99912`"), "{}", e[0]);
+    assert!(errors(&read(&format!("{MINIMAL}{planform}NACA-W-5-23012\n"))).is_empty());
+}

@@ -18,6 +18,7 @@ use crate::deck::cards::{AirfoilCard, Cards, DerivUnit, Dim, Surface};
 use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, RawDeck, Value};
 use crate::error::{DeckProblem, Diagnostic, Severity};
+use crate::geometry::section::SectionError;
 pub use crate::methods::section::MaximumReading;
 pub use crate::methods::wing::ZeroLiftReading;
 
@@ -575,6 +576,17 @@ impl Deck {
     }
 }
 
+/// The section namelists and their surfaces.
+const SECTION_NAMELISTS: [(&str, Surface); 4] = [
+    ("WGSCHR", Surface::Wing),
+    ("HTSCHR", Surface::HorizontalTail),
+    ("VTSCHR", Surface::VerticalTail),
+    ("VFSCHR", Surface::VentralFin),
+];
+
+/// How diagnostics name an airfoil card.
+const NACA_CARD: &str = "NACA";
+
 const PLANFORMS: [(&str, &str); 4] = [
     ("WGPLNF", "WGSCHR"),
     ("HTPLNF", "HTSCHR"),
@@ -719,6 +731,20 @@ impl<'a> Checks<'a> {
             variable: var.map(str::to_string),
             problem,
             hint: hint.map(str::to_string),
+        });
+    }
+
+    /// A problem of a card as a whole, at its line.
+    fn at_line(&mut self, severity: Severity, line: usize, card: &str, message: String) {
+        self.out.push(Diagnostic {
+            severity,
+            file: self.file.to_string(),
+            line,
+            column: 0,
+            card: Some(card.to_string()),
+            variable: None,
+            problem: DeckProblem::Physical { message },
+            hint: None,
         });
     }
 
@@ -1113,6 +1139,37 @@ impl Case {
         (case, checks.out)
     }
 
+    /// Each surface's section made as the methods make it (the xxSCHR coordinates with
+    /// TYPEIN, else the NACA card): a coordinate table or a designation that gives no section
+    /// is an error here, where the deck is checked, and not only a warning of the run (whose
+    /// surface then has no section characteristics).
+    fn check_sections(&self, c: &mut Checks) {
+        use crate::geometry::section::{section_source, user_defined, NacaSection, SectionSource};
+        for (name, surface) in SECTION_NAMELISTS {
+            match section_source(self, surface) {
+                Some(SectionSource::User(input)) => {
+                    if let Err(e @ SectionError::UserSection { variable, .. }) = user_defined(input)
+                    {
+                        let hint = (variable == "XCORD").then_some(
+                            "XCORD gives the stations as fractions of the chord, increasing from 0 at the leading edge to 1 at the trailing edge",
+                        );
+                        let message = format!("{} section: {e}", surface.name());
+                        c.push(Severity::Error, name, Some(variable), message, hint);
+                    }
+                }
+                Some(SectionSource::Naca(card)) => {
+                    // The designation is what can be wrong; its coordinates are made when
+                    // the case runs.
+                    if let Err(e) = NacaSection::from_card_with(card, self.five_digit, self.six_a) {
+                        let message = format!("{} section: {e}", surface.name());
+                        c.at_line(Severity::Error, card.line, NACA_CARD, message);
+                    }
+                }
+                None => {}
+            }
+        }
+    }
+
     fn check(&self, c: &mut Checks) {
         // The original runs a case only with $FLTCON and $SYNTHS, unless it is a
         // low-aspect-ratio wing-body ($LARWB), hypersonic ($HYPEFF) or transverse-jet ($TRNJET)
@@ -1247,12 +1304,13 @@ impl Case {
         );
         c.acute("SYNTHS", "ALIW", "the wing's incidence");
         c.acute("SYNTHS", "ALIH", "the horizontal tail's incidence");
-        for name in ["WGSCHR", "HTSCHR", "VTSCHR", "VFSCHR"] {
+        for (name, _) in SECTION_NAMELISTS {
             // Fractions of the chord: the thickness ratio and its station.
             c.range(name, "TOVC", CHORD_FRACTION, self.dim);
             c.range(name, "XOVC", CHORD_FRACTION, self.dim);
             c.non_negative(name, "DELTAY");
         }
+        self.check_sections(c);
         c.positive("OPTINS", "SREF");
         c.positive("OPTINS", "CBARR");
         c.positive("OPTINS", "BLREF");
@@ -1393,12 +1451,7 @@ impl Case {
                 v.push(n.to_string());
             }
         }
-        for (sc, surface) in [
-            ("WGSCHR", Surface::Wing),
-            ("HTSCHR", Surface::HorizontalTail),
-            ("VTSCHR", Surface::VerticalTail),
-            ("VFSCHR", Surface::VentralFin),
-        ] {
+        for (sc, surface) in SECTION_NAMELISTS {
             if self.sections.contains_key(surface.name()) {
                 v.push(sc.to_string());
             }

@@ -32,7 +32,7 @@ pub use tables::stations;
 pub use thickness::{JoinedThickness, Thickness};
 pub use user::user_defined;
 
-use crate::case::Case;
+use crate::case::{Case, SectionInput};
 use crate::deck::cards::{AirfoilCard, Surface};
 
 /// The coordinate table of a NACA card at the original's 60 stations (AIRFOL, datcom.f lines
@@ -41,22 +41,39 @@ pub fn naca(card: &AirfoilCard) -> Result<SectionCoordinates, SectionError> {
     NacaSection::from_card(card)?.coordinates()
 }
 
-/// The section of `surface` in `case` as the original chooses it (M50O62, datcom.f lines
-/// 21002-21007): the xxSCHR coordinates when the namelist gives TYPEIN, else the surface's NACA
-/// card; `None` when the case has neither.
-pub fn section_for(
-    case: &Case,
-    surface: Surface,
-) -> Option<Result<SectionCoordinates, SectionError>> {
+/// Where the section of a surface comes from.
+#[derive(Debug, Clone, Copy)]
+pub enum SectionSource<'a> {
+    /// The xxSCHR namelist's coordinates (it gives TYPEIN).
+    User(&'a SectionInput),
+    /// The surface's (last) NACA card.
+    Naca(&'a AirfoilCard),
+}
+
+/// Where the section of `surface` in `case` comes from, as the original chooses it (M50O62,
+/// datcom.f lines 21002-21007): the xxSCHR coordinates when the namelist gives TYPEIN, else
+/// the surface's NACA card; `None` when the case has neither.
+pub fn section_source(case: &Case, surface: Surface) -> Option<SectionSource<'_>> {
     match case.sections.get(surface.name()) {
-        Some(input) if input.scalars.contains_key("TYPEIN") => Some(user_defined(input)),
+        Some(input) if input.scalars.contains_key("TYPEIN") => Some(SectionSource::User(input)),
         _ => case
             .airfoils
             .iter()
             .rev()
             .find(|a| a.surface == surface)
-            .map(|card| {
-                NacaSection::from_card_with(card, case.five_digit, case.six_a)?.coordinates()
-            }),
+            .map(SectionSource::Naca),
     }
+}
+
+/// The section of `surface` in `case` as the original chooses it ([`section_source`]); `None`
+/// when the case has none.
+pub fn section_for(
+    case: &Case,
+    surface: Surface,
+) -> Option<Result<SectionCoordinates, SectionError>> {
+    Some(match section_source(case, surface)? {
+        SectionSource::User(input) => user_defined(input),
+        SectionSource::Naca(card) => NacaSection::from_card_with(card, case.five_digit, case.six_a)
+            .and_then(|s| s.coordinates()),
+    })
 }
