@@ -146,7 +146,7 @@ fn table(case: &CaseResults, c: &ConditionResults) -> String {
     if !computed {
         let _ = writeln!(
             s,
-            "  (coefficients not computed yet: the component methods arrive in later versions)"
+            "  (no coefficients computed for this configuration: the warnings say why)"
         );
     }
     s
