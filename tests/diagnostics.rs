@@ -528,3 +528,42 @@ fn sections_that_cannot_be_made_are_errors_where_they_are_given() {
     assert!(e[0].to_string().contains("designation `99912`"), "{}", e[0]);
     assert!(errors(&read(&format!("{MINIMAL}{planform}NACA-W-5-23012\n"))).is_empty());
 }
+
+/// A namelist whose methods are not implemented (flaps, power, ground effect, ...) is read and
+/// named in a warning at its place that says what the run leaves out: the pages were silently
+/// those of the undeflected, power-off configuration.
+#[test]
+fn namelists_without_methods_are_named() {
+    let d = read(&format!(
+        "{MINIMAL} $SYMFLP FTYPE=1.0, NDELTA=2.0, DELTA(1)=0.0,10.0$\n $PROPWR NENGSP=1.0$\n"
+    ));
+    assert!(errors(&d).is_empty(), "{:?}", d.diagnostics);
+    let named = |nl: &str| {
+        d.diagnostics
+            .iter()
+            .find(|x| x.card.as_deref() == Some(nl))
+            .unwrap_or_else(|| panic!("no diagnostic for ${nl}: {:?}", d.diagnostics))
+    };
+    let flaps = named("SYMFLP");
+    assert_eq!(
+        (flaps.severity, flaps.line, flaps.column),
+        (Severity::Warning, 3, 10)
+    );
+    assert!(flaps.to_string().contains("are not implemented"), "{flaps}");
+    let power = named("PROPWR");
+    assert_eq!(power.line, 4);
+    assert!(
+        power.to_string().contains("the pages are power-off"),
+        "{power}"
+    );
+    // A deck without them has no such warning.
+    let plain = read(MINIMAL);
+    assert!(
+        plain
+            .diagnostics
+            .iter()
+            .all(|x| !x.to_string().contains("not implemented")),
+        "{:?}",
+        plain.diagnostics
+    );
+}

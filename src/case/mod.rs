@@ -584,6 +584,19 @@ const SECTION_NAMELISTS: [(&str, Surface); 4] = [
     ("VFSCHR", Surface::VentralFin),
 ];
 
+/// Namelists the original reads whose methods are not implemented here, and what a run leaves
+/// out because of them.
+const NOT_IMPLEMENTED: [(&str, &str); 8] = [
+    ("SYMFLP", "the methods of symmetrically deflected high-lift and control devices (DATCOM section 6.1) are not implemented: their increments and pages are not computed; the pages are those of the undeflected configuration"),
+    ("ASYFLP", "the methods of asymmetrically deflected controls (DATCOM section 6.2) are not implemented: their rolling and yawing moments are not computed"),
+    ("PROPWR", "the propeller power effects are not implemented: the pages are power-off, where the original adds the power increments"),
+    ("JETPWR", "the jet power effects are not implemented: the pages are power-off, where the original adds the power increments"),
+    ("GRNDEF", "the ground-effect methods are not implemented: the pages are out of ground effect, and the original's ground-effect pages are not computed"),
+    ("CONTAB", "the control-tab methods are not implemented: their hinge moments are not computed"),
+    ("HYPEFF", "the hypersonic flap methods are not implemented: the case has no coefficients"),
+    ("TRNJET", "the transverse-jet control methods are not implemented: the case has no coefficients"),
+];
+
 /// How diagnostics name an airfoil card.
 const NACA_CARD: &str = "NACA";
 
@@ -708,9 +721,14 @@ struct Checks<'a> {
 }
 
 impl<'a> Checks<'a> {
+    /// Where a problem of `card` (and `var`) is: the variable's assignment; without a
+    /// variable, the namelist's first assignment; else the case's first line.
     fn at(&self, card: &str, var: Option<&str>) -> (usize, usize) {
-        var.and_then(|v| self.raw.origins.get(card, v))
-            .unwrap_or((self.raw.first_line, 0))
+        match var {
+            Some(v) => self.raw.origins.get(card, v),
+            None => self.raw.origins.first_in(card),
+        }
+        .unwrap_or((self.raw.first_line, 0))
     }
 
     fn problem(
@@ -1171,6 +1189,17 @@ impl Case {
     }
 
     fn check(&self, c: &mut Checks) {
+        for (name, what) in NOT_IMPLEMENTED {
+            if self.other.contains_key(name) {
+                c.push(
+                    Severity::Warning,
+                    name,
+                    None,
+                    format!("${name}: {what}"),
+                    None,
+                );
+            }
+        }
         // The original runs a case only with $FLTCON and $SYNTHS, unless it is a
         // low-aspect-ratio wing-body ($LARWB), hypersonic ($HYPEFF) or transverse-jet ($TRNJET)
         // case; and only with planform and section of the wing and of the horizontal tail

@@ -103,6 +103,17 @@ impl Origins {
         Some(self.places[i].1)
     }
 
+    /// Where namelist `nl`'s first recorded assignment is (line, column): the nearest place
+    /// to its start the origins know.
+    pub fn first_in(&self, nl: &str) -> Option<(usize, usize)> {
+        let n = schema::key(nl)?;
+        self.places
+            .iter()
+            .filter(|((k, _), _)| *k == n)
+            .map(|(_, at)| *at)
+            .min()
+    }
+
     /// Records that variable `var` of namelist `nl` was assigned at `at` (line, column). Names
     /// longer than eight characters, which no namelist or variable has, are not recorded.
     pub fn insert(&mut self, nl: &str, var: &str, at: (usize, usize)) {
