@@ -944,18 +944,31 @@ fn a_step_in_the_area_places_x1_at_the_step() {
 }
 
 #[test]
-fn a_cambered_body_widest_at_the_nose_is_refused() {
-    // The cambered-body method needs the station where the radius first reaches 0.96 of its
-    // largest value ahead of the largest; the original reads outside its arrays for this.
+fn a_cambered_body_widest_at_the_nose_takes_its_potential_force_there() {
+    // The cambered-body method puts the potential normal force on the forebody up to the
+    // station where the radius first reaches 0.96 of its largest value; with the largest at
+    // the first station (a blunt nose) there is none ahead of it (the original reads outside
+    // its arrays). The area grows in a step at the nose, so the force acts there: centre at
+    // x = 0, forebody planform area 0, and CMA = CLA·(XCG − 0)/c̄ = CLA·5/1.
     let text = CONE_CYLINDER.replace(
         "NX=5.0, X(1)=0.0,1.0,5.0,9.5,10.0, R(1)=0.0,0.5,0.5,0.5,0.5",
         "NX=3.0, X(1)=0.0,5.0,10.0, R(1)=0.5,0.4,0.3,
    ZU(1)=0.5,0.4,0.3, ZL(1)=-0.5,-0.4,-0.3",
     );
-    assert!(matches!(
-        run_case(&case_of(&text)),
-        Err(BodyMethodError::CamberedBodyUndefined { .. })
-    ));
+    let r = run_case(&case_of(&text)).expect("a blunt cambered body is computed");
+    let BodyTerms::Cambered(t) = &r.terms else {
+        panic!("cambered terms: {:?}", r.terms)
+    };
+    assert_eq!(t.forebody_station, 0.0);
+    assert_eq!(t.forebody_planform_area, 0.0);
+    assert_eq!(t.potential_centre_over_length, 0.0);
+    close("CMA", t.cma_per_rad, t.cla_per_rad * 5.0, HAND);
+    assert!(t.cla_per_rad > 0.0);
+    assert!(r
+        .warnings
+        .iter()
+        .any(|w| matches!(w, BodyWarning::BluntNose { x } if *x == 0.0)));
+    assert!(r.cl.iter().chain(&r.cm).all(Option::is_some));
 }
 
 #[test]

@@ -101,6 +101,36 @@ fn camber_line_terms(shape: &BodyShape, zu: &[f64], zl: &[f64]) -> (f64, f64) {
     (alpha0_rad.to_degrees(), cm0_unit)
 }
 
+/// The forebody up to the station where the radius first reaches 0.96 of its largest value
+/// (the original's X95), the largest being at station `imax` > 0.
+struct Forebody {
+    /// The station, m, and its radius.
+    x96: f64,
+    r96: f64,
+    /// Planform area ahead of it, m².
+    area: f64,
+}
+
+fn forebody(shape: &BodyShape, imax: usize) -> Result<Forebody, &'static str> {
+    let r96 = FOREBODY_RADIUS_FRACTION * shape.r[imax];
+    let (x_a, r_a) = (shape.x[imax - 1], shape.r[imax - 1]);
+    let x96 = x_a + (shape.x[imax] - x_a) * (r96 - r_a) / (shape.r[imax] - r_a);
+    let i96 = shape
+        .x
+        .iter()
+        .position(|&x| x >= x96)
+        .ok_or("the station of 0.96 of the largest radius lies aft of the body")?;
+    let mut fx = shape.x[..=i96].to_vec();
+    let mut fr = shape.r[..=i96].to_vec();
+    fx[i96] = x96;
+    fr[i96] = r96;
+    let area = 2.0 * Resampled::new(&fx, &fr).integral();
+    if area <= 0.0 || !area.is_finite() {
+        return Err("no planform area ahead of the station of 0.96 of the largest radius");
+    }
+    Ok(Forebody { x96, r96, area })
+}
+
 /// Normal force, pitching moment and drag due to lift of a cambered body at each angle of
 /// attack (DATCOM 4.2.1.2 cambered-body method with 4.2.2.1; original: BODOPT, lines
 /// 2007-2152).
@@ -143,17 +173,8 @@ pub fn cambered_body(
     let Some(imax) = first_maximum(&shape.r) else {
         return undefined("no radius along the body".into());
     };
-    if imax == 0 {
-        return undefined(
-            "the radius is largest at the first station, so the station of 0.96 of the largest radius ahead of it does not exist (the original reads outside its arrays there)"
-                .into(),
-        );
-    }
     let r_max = shape.r[imax];
     let aspect_ratio = 4.0 * r_max * r_max / planform_area;
-    let r96 = FOREBODY_RADIUS_FRACTION * r_max;
-    let (x_a, r_a) = (shape.x[imax - 1], shape.r[imax - 1]);
-    let x96 = x_a + (shape.x[imax] - x_a) * (r96 - r_a) / (shape.r[imax] - r_a);
     let kp = figures::read(figures::POTENTIAL_FACTOR, &[aspect_ratio], warnings)?;
     let kv = figures::read(figures::VISCOUS_FACTOR, &[aspect_ratio], warnings)?;
 
@@ -176,29 +197,32 @@ pub fn cambered_body(
         (ratio, l / base_diameter)
     };
 
-    let Some(i96) = shape.x.iter().position(|&x| x >= x96) else {
-        return undefined("the station of 0.96 of the largest radius lies aft of the body".into());
+    let forebody = if imax == 0 {
+        warnings.push(BodyWarning::BluntNose { x: shape.x[0] });
+        None
+    } else {
+        Some(
+            forebody(shape, imax).map_err(|reason| BodyMethodError::CamberedBodyUndefined {
+                reason: reason.into(),
+            })?,
+        )
     };
-    let mut fx = shape.x[..=i96].to_vec();
-    let mut fr = shape.r[..=i96].to_vec();
-    fx[i96] = x96;
-    fr[i96] = r96;
-    let forebody_planform_area = 2.0 * Resampled::new(&fx, &fr).integral();
-    if forebody_planform_area <= 0.0 || !forebody_planform_area.is_finite() {
-        return undefined(
-            "no planform area ahead of the station of 0.96 of the largest radius".into(),
-        );
-    }
     let alpha_v_deg = figures::read(
         figures::CROSSFLOW_ONSET,
         &[width_over_depth, base_fineness],
         warnings,
     )?;
-    // With the forebody's radius a power law r ∝ x^e through (x96, r96) of the same planform
-    // area, the area grows as x^2e and the potential loading dS/dx has its centre at 2e/(2e+1)
-    // of x96.
-    let exponent = 2.0 * r96 * x96 / forebody_planform_area - 1.0;
-    let potential_centre_over_length = 2.0 * exponent / (2.0 * exponent + 1.0) * x96 / l;
+    let (x96, forebody_planform_area, potential_centre_over_length) = match forebody {
+        // With the forebody's radius a power law r ∝ x^e through (x96, r96) of the same
+        // planform area, the area grows as x^2e and the potential loading dS/dx has its centre
+        // at 2e/(2e+1) of x96.
+        Some(Forebody { x96, r96, area }) => {
+            let exponent = 2.0 * r96 * x96 / area - 1.0;
+            (x96, area, 2.0 * exponent / (2.0 * exponent + 1.0) * x96 / l)
+        }
+        // A blunt nose: the area grows in a step there, where the loading acts.
+        None => (shape.x[0], 0.0, shape.x[0] / l),
+    };
     let potential_arm = shape.xcg / l - potential_centre_over_length;
     let strips: f64 = planform
         .x
