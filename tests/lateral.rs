@@ -461,6 +461,32 @@ fn a_build_run_reports_wing_body_sideslip_derivatives() {
     }
 }
 
+/// Figure 5.2.1.1-7 gives the wing-height factor of the wing-body CYβ for a wing that meets the
+/// body, |z_w/(d/2)| ≤ 1, with d = 2(SSPN − SSPNE) the body's width at the wing. The bundled UAV
+/// (ZW = 0.05, d = 0.14) is inside and its wing-body page gets no warning; with SSPNE a millimetre short of SSPN
+/// (d = 0.002) the ratio is about 50, the factor is extrapolated linearly (as the original
+/// does: CYβ grows fiftyfold) and a warning names the figure and the value.
+#[test]
+fn a_wing_height_beyond_the_body_is_a_warning() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let text = common::text(&path).replace("DAMP\n", "DAMP\nBUILD\n");
+    let warned = |text: &str| {
+        let deck = datcom::read_deck(text, "example-uav.dcm");
+        let results = datcom::results::run_case(&deck.cases[0]);
+        results
+            .warnings
+            .iter()
+            .filter(|w| w.starts_with("wing-body, sideslip: figure 5.2.1.1-7"))
+            .cloned()
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(warned(&text), Vec::<String>::new());
+    let thin = text.replace("SSPN=1.20, SSPNE=1.13", "SSPN=1.20, SSPNE=1.199");
+    let w = warned(&thin);
+    assert!(!w.is_empty(), "no warning of figure 5.2.1.1-7");
+    assert!(w[0].contains("is outside the data (-1 to 1"), "{}", w[0]);
+}
+
 /// The vertical tail's sideslip derivatives worked by hand (DATCOM 5.3.1.1 as the original's
 /// SUBLAT applies it), on a deck in metres with round numbers:
 ///

@@ -265,7 +265,7 @@ const QUERY_DIGITS: usize = 4;
 
 /// A query value as a person reads it: rounded to [`QUERY_DIGITS`] significant digits, plain
 /// from 1e-4 to below 1e6, in exponent form beyond (the warning's `value` keeps it exactly).
-struct Query(f64);
+pub(crate) struct Query(pub(crate) f64);
 
 impl fmt::Display for Query {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

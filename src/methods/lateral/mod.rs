@@ -45,7 +45,7 @@ use std::fmt;
 use serde::Serialize;
 
 use crate::case::Case;
-use crate::charts::ChartWarning;
+use crate::charts::{ChartWarning, Query};
 use crate::methods::wing::WingMethodError;
 use crate::results::planform_area_and_mac;
 
@@ -95,6 +95,10 @@ pub enum LateralWarning {
     /// The exposed semispan equals the semispan (no body width at the wing root): the wing
     /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
     NoBodyWidthAtWing,
+    /// The wing's height over the body's half width at the wing, z_w/(d/2), lies outside
+    /// figure 5.2.1.1-7's range (−1 to 1, a wing that meets the body): the wing-height factor
+    /// of the wing-body CYβ is extrapolated linearly, as in the original.
+    WingHeightOutside { ratio: f64, factor: f64 },
     /// The vertical panel's exposed span is not below its span (no body depth at the panel): the
     /// charts of b_v/2r₁ are held at their last nodes (the isolated panel).
     NoBodyAtFin,
@@ -119,6 +123,12 @@ impl fmt::Display for LateralWarning {
             LateralWarning::NoBodyWidthAtWing => write!(
                 f,
                 "SSPNE equals SSPN (no body width at the wing root): no wing-body CYB"
+            ),
+            LateralWarning::WingHeightOutside { ratio, factor } => write!(
+                f,
+                "figure 5.2.1.1-7: z_w/(d/2) = {} is outside the data (-1 to 1, a wing that meets the body; d = 2(SSPN - SSPNE)): the wing-height factor of CYB, {}, is extrapolated linearly (as in the original)",
+                Query(*ratio),
+                Query(*factor)
             ),
         }
     }

@@ -22,6 +22,8 @@ use crate::numeric::trapezoid;
 const CYB_HIGH_WING_SLOPE: f64 = 0.49;
 /// The same, wing below the body axis.
 const CYB_LOW_WING_SLOPE: f64 = 0.85;
+/// The largest |z_w/(d/2)| of figure 5.2.1.1-7: the wing at the top or bottom of the body.
+const WING_HEIGHT_RANGE: f64 = 1.0;
 /// Side force per degree of effective dihedral per degree of sideslip (as the wing's).
 const CYB_PER_DIHEDRAL: f64 = 0.0001;
 /// Reynolds-number factor K_Rl = 1 + ln(Re_l/10⁶)/4.86 (DATCOM figure 5.2.3.1-9 as a formula).
@@ -259,6 +261,11 @@ pub fn wing_body_lateral_at_root(
         .map(|v| v / DEG_PER_RAD);
     if body_width_at_wing <= 0.0 {
         warnings.push(LateralWarning::NoBodyWidthAtWing);
+    } else if height_ratio.abs() > WING_HEIGHT_RANGE {
+        warnings.push(LateralWarning::WingHeightOutside {
+            ratio: height_ratio,
+            factor: side_force_factor,
+        });
     }
     let cyb_first = body_slope_per_deg.and_then(|cla| {
         finite(
