@@ -497,6 +497,13 @@ pub struct Case {
     pub save: bool,
 }
 
+impl Default for Case {
+    /// [`Case::new`].
+    fn default() -> Self {
+        Case::new()
+    }
+}
+
 /// A deck: its typed cases and every diagnostic (reader's and physical checks').
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Deck {
@@ -1141,20 +1148,105 @@ impl Case {
         case.check(&mut checks);
         let mut case = case;
         // Angles out of order were reported by the checks: the case computes them in order.
-        if let Some(f) = case.flight.as_mut() {
-            if let Some(ordered) = f.angles_in_order() {
-                f.alpha_deg = ordered.angles;
-            }
-        }
-        if let Some(f) = &case.flight {
-            let (conditions, warnings) = conditions::flight_conditions(f);
-            for w in &warnings {
-                checks.push(Severity::Warning, "FLTCON", None, w.clone(), None);
-            }
-            case.conditions = conditions;
-            case.condition_warnings = warnings;
+        let _reported = case.derive_conditions();
+        for w in &case.condition_warnings {
+            checks.push(Severity::Warning, "FLTCON", None, w.clone(), None);
         }
         (case, checks.out)
+    }
+
+    /// A case with no component, no flight condition and nothing computed, to be filled in
+    /// code: set `flight`, `reference`, `synthesis`, the components (`body`, `wing`, ...) and
+    /// the sections (`airfoils`, `sections`), every quantity in SI as the fields say, then
+    /// [`Case::prepare`] it and give it to [`crate::results::run_case`] (or to any method of
+    /// [`crate::methods`]). Reports are written in metres (`dim`) with derivatives per degree
+    /// (`deriv`) unless these are changed. `examples/build_case.rs` builds a whole aircraft.
+    ///
+    /// ```
+    /// use datcom::case::{Case, FlightInput, Planform, Reference};
+    /// use datcom::deck::cards::{AirfoilCard, NacaSeries, Surface};
+    ///
+    /// let mut case = Case::new();
+    /// case.flight = Some(FlightInput {
+    ///     mach: vec![0.2],
+    ///     altitude: vec![0.0],
+    ///     alpha_deg: vec![0.0, 4.0],
+    ///     ..FlightInput::default()
+    /// });
+    /// case.reference = Reference { area: Some(10.0), chord: Some(1.0), span: Some(10.0), roughness: None };
+    /// case.wing = Some(Planform {
+    ///     chrdr: Some(1.0), chrdtp: Some(1.0), sspn: Some(5.0), sspne: Some(5.0),
+    ///     savsi_deg: Some(0.0), chstat: Some(0.25), planform_type: Some(1.0),
+    ///     ..Planform::default()
+    /// });
+    /// case.airfoils.push(AirfoilCard {
+    ///     surface: Surface::Wing, series: NacaSeries::Four, designation: "0012".into(), line: 0,
+    /// });
+    /// assert!(case.prepare().is_empty());
+    /// let results = datcom::results::run_case(&case);
+    /// let cl = &results.conditions[0].static_coefficients.cl;
+    /// assert_eq!(cl[0], Some(0.0)); // symmetric section, no twist
+    /// assert!(cl[1].is_some_and(|cl| cl > 0.2 && cl < 0.4));
+    /// ```
+    pub fn new() -> Case {
+        Case {
+            number: 1,
+            first_line: 0,
+            caseid: None,
+            dim: Dim::M,
+            scale: 1.0,
+            deriv: DerivUnit::default(),
+            section_reynolds: SectionReynolds::default(),
+            five_digit: FiveDigitReading::default(),
+            section_maximum: MaximumReading::default(),
+            six_a: SixAReading::default(),
+            zero_lift: ZeroLiftReading::default(),
+            cards: Cards::default(),
+            flight: None,
+            reference: Reference::default(),
+            synthesis: None,
+            body: None,
+            wing: None,
+            horizontal_tail: None,
+            vertical_tail: None,
+            ventral_fin: None,
+            twin_panels: None,
+            sections: BTreeMap::new(),
+            larwb: None,
+            conditions: Vec::new(),
+            condition_warnings: Vec::new(),
+            airfoils: Vec::new(),
+            other: BTreeMap::new(),
+            save: false,
+        }
+    }
+
+    /// Makes a case built in code ready to run, as reading a deck makes a deck's case: the
+    /// angles of attack of `flight` put in increasing order (each once) and the flight
+    /// conditions derived from it (the 1962 US Standard Atmosphere at the altitudes where
+    /// pressure and temperature are not given). Returns what was assumed or changed (the
+    /// condition warnings are also kept in `condition_warnings`). The deck checks of `datcom-rs
+    /// check` are not run: they read the values as a deck writes them.
+    pub fn prepare(&mut self) -> Vec<String> {
+        let reordered = self.derive_conditions();
+        reordered
+            .into_iter()
+            .chain(self.condition_warnings.iter().cloned())
+            .collect()
+    }
+
+    /// Puts the angles of attack in increasing order, saying why when they were not, and
+    /// derives the flight conditions and their warnings from `flight`.
+    fn derive_conditions(&mut self) -> Option<String> {
+        let f = self.flight.as_mut()?;
+        let reordered = f.angles_in_order().map(|ordered| {
+            f.alpha_deg = ordered.angles;
+            ordered.reason
+        });
+        let (conditions, warnings) = conditions::flight_conditions(f);
+        self.conditions = conditions;
+        self.condition_warnings = warnings;
+        reordered
     }
 
     /// Each surface's section made as the methods make it (the xxSCHR coordinates with

@@ -1,0 +1,54 @@
+//! The library without a deck: a case built in code (`examples/build_case.rs`) computes as the
+//! same aircraft read from its deck.
+
+// The example's `main` is not called here, only its case.
+#[allow(dead_code)]
+#[path = "../examples/build_case.rs"]
+mod build_case;
+
+#[test]
+fn a_case_built_in_code_computes_as_its_deck() {
+    let mut built = build_case::example_uav();
+    assert!(
+        built.conditions.is_empty(),
+        "nothing derived before prepare"
+    );
+    let warnings = built.prepare();
+
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let deck = datcom::read_deck_file(&path).expect("the bundled deck reads");
+    let read = &deck.cases[0];
+    assert_eq!(warnings, read.condition_warnings);
+    assert_eq!(built.conditions, read.conditions);
+    assert_eq!(built.flight, read.flight);
+
+    let ours = datcom::results::run_case(&built);
+    let theirs = datcom::results::run_case(read);
+    assert_eq!(
+        ours.conditions.len(),
+        4,
+        "two Mach numbers at two altitudes"
+    );
+    assert_eq!(ours.conditions, theirs.conditions);
+    assert_eq!(ours.sections, theirs.sections);
+    assert_eq!(ours.warnings, theirs.warnings);
+}
+
+/// Angles given out of order are put in order by `prepare`, which says so.
+#[test]
+fn prepare_orders_the_angles_and_says_so() {
+    let mut case = build_case::example_uav();
+    if let Some(f) = case.flight.as_mut() {
+        f.alpha_deg = vec![4.0, 0.0, 2.0];
+    }
+    let warnings = case.prepare();
+    assert_eq!(
+        case.flight.as_ref().map(|f| f.alpha_deg.clone()),
+        Some(vec![0.0, 2.0, 4.0])
+    );
+    assert!(
+        warnings.iter().any(|w| w.contains("do not increase")),
+        "{warnings:?}"
+    );
+    assert_eq!(case.conditions.len(), 4);
+}
