@@ -1011,20 +1011,37 @@ fn reference(case: &Case) -> ReferenceDimensions {
 /// Runs one case. A case whose angles of attack are not in increasing order is computed at
 /// its angles in increasing order, each once, with a warning (see
 /// [`crate::case::FlightInput::angles_in_order`]).
+///
+/// A case built in code whose flight conditions were not derived from its `flight` (no
+/// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
+/// gives, with a warning.
 pub fn run_case(case: &Case) -> CaseResults {
-    let Some(ordered) = case
+    let ordered = case
         .flight
         .as_ref()
-        .and_then(crate::case::FlightInput::angles_in_order)
-    else {
+        .and_then(crate::case::FlightInput::angles_in_order);
+    let derived = case.flight.as_ref().and_then(|f| {
+        let (conditions, warnings) = crate::conditions::flight_conditions(f);
+        (conditions != case.conditions).then_some((conditions, warnings))
+    });
+    if ordered.is_none() && derived.is_none() {
         return compute_case(case);
-    };
+    }
     let mut fixed = case.clone();
-    if let Some(f) = fixed.flight.as_mut() {
+    let mut notes = Vec::new();
+    if let Some((conditions, warnings)) = derived {
+        fixed.conditions = conditions;
+        fixed.condition_warnings = warnings;
+        notes.push(
+            "the flight conditions are derived from the case's flight input here: Case::prepare was not called after it was set or changed".to_string(),
+        );
+    }
+    if let (Some(ordered), Some(f)) = (ordered, fixed.flight.as_mut()) {
         f.alpha_deg = ordered.angles;
+        notes.push(ordered.reason);
     }
     let mut results = compute_case(&fixed);
-    results.warnings.insert(0, ordered.reason);
+    results.warnings.splice(0..0, notes);
     results
 }
 

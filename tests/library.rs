@@ -52,3 +52,44 @@ fn prepare_orders_the_angles_and_says_so() {
     );
     assert_eq!(case.conditions.len(), 4);
 }
+
+/// What a user of the API can forget: `prepare` after changing the flight input (the run then
+/// derives the conditions itself and says so), the vertical tail's direction (up unless set),
+/// and a case whose flight input is removed (no condition left behind).
+#[test]
+fn what_a_case_built_in_code_does_not_need() {
+    assert!(
+        datcom::case::Synthesis::default().vertup,
+        "VERTUP defaults to up, as in a deck"
+    );
+
+    let mut case = build_case::example_uav();
+    let prepared = {
+        let mut c = case.clone();
+        c.prepare();
+        datcom::results::run_case(&c)
+    };
+    let unprepared = datcom::results::run_case(&case);
+    assert_eq!(unprepared.conditions, prepared.conditions);
+    assert!(
+        unprepared.warnings[0].contains("Case::prepare was not called"),
+        "{:?}",
+        unprepared.warnings.first()
+    );
+    assert!(!prepared
+        .warnings
+        .iter()
+        .any(|w| w.contains("Case::prepare")));
+
+    // Stale: prepared, then the Mach numbers changed.
+    case.prepare();
+    if let Some(f) = case.flight.as_mut() {
+        f.mach = vec![0.1];
+    }
+    let stale = datcom::results::run_case(&case);
+    assert!(stale.conditions.iter().all(|c| c.condition.mach == 0.1));
+
+    case.flight = None;
+    case.prepare();
+    assert!(case.conditions.is_empty() && case.condition_warnings.is_empty());
+}

@@ -263,7 +263,8 @@ pub struct Reference {
 }
 
 /// $SYNTHS: positions of the components and the moment reference centre, SI; angles in degrees.
-#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+/// The default has every position unset and the vertical tail up, as a deck without them.
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Synthesis {
     pub xcg: Option<f64>,
     pub zcg: Option<f64>,
@@ -285,6 +286,32 @@ pub struct Synthesis {
     pub scale: Option<f64>,
     /// Vertical tail above the body reference plane (default true).
     pub vertup: bool,
+}
+
+impl Default for Synthesis {
+    fn default() -> Self {
+        Synthesis {
+            xcg: None,
+            zcg: None,
+            xw: None,
+            zw: None,
+            aliw_deg: None,
+            xh: None,
+            zh: None,
+            alih_deg: None,
+            xv: None,
+            zv: None,
+            xvf: None,
+            zvf: None,
+            yv: None,
+            yf: None,
+            phiv_deg: None,
+            phif_deg: None,
+            hinax: None,
+            scale: None,
+            vertup: true,
+        }
+    }
 }
 
 /// $BODY: stations and their areas, perimeters, radii and contours, SI.
@@ -1224,10 +1251,15 @@ impl Case {
     /// Makes a case built in code ready to run, as reading a deck makes a deck's case: the
     /// angles of attack of `flight` put in increasing order (each once) and the flight
     /// conditions derived from it (the 1962 US Standard Atmosphere at the altitudes where
-    /// pressure and temperature are not given). Returns what was assumed or changed (the
-    /// condition warnings are also kept in `condition_warnings`). The deck checks of `datcom-rs
-    /// check` are not run: they read the values as a deck writes them.
+    /// pressure and temperature are not given; `nalt_given` is set when altitudes are given).
+    /// Returns what was assumed or changed (the condition warnings are also kept in
+    /// `condition_warnings`). Without `flight` the case has no condition. The deck checks of
+    /// `datcom-rs check` are not run: they read the values as a deck writes them.
     pub fn prepare(&mut self) -> Vec<String> {
+        // In code the altitudes given are the altitudes (a deck's NALT counts them).
+        if let Some(f) = self.flight.as_mut() {
+            f.nalt_given |= !f.altitude.is_empty();
+        }
         let reordered = self.derive_conditions();
         reordered
             .into_iter()
@@ -1238,7 +1270,11 @@ impl Case {
     /// Puts the angles of attack in increasing order, saying why when they were not, and
     /// derives the flight conditions and their warnings from `flight`.
     fn derive_conditions(&mut self) -> Option<String> {
-        let f = self.flight.as_mut()?;
+        let Some(f) = self.flight.as_mut() else {
+            self.conditions.clear();
+            self.condition_warnings.clear();
+            return None;
+        };
         let reordered = f.angles_in_order().map(|ordered| {
             f.alpha_deg = ordered.angles;
             ordered.reason

@@ -80,27 +80,7 @@ pub fn tail_as_wing(case: &Case) -> Result<Case, TailError> {
         })
         .collect();
     let (xh, zh) = tail_position(case.synthesis.as_ref());
-    let mut s = case.synthesis.clone().unwrap_or(Synthesis {
-        xcg: None,
-        zcg: None,
-        xw: None,
-        zw: None,
-        aliw_deg: None,
-        xh: None,
-        zh: None,
-        alih_deg: None,
-        xv: None,
-        zv: None,
-        xvf: None,
-        zvf: None,
-        yv: None,
-        yf: None,
-        phiv_deg: None,
-        phif_deg: None,
-        hinax: None,
-        scale: None,
-        vertup: true,
-    });
+    let mut s = case.synthesis.clone().unwrap_or_default();
     s.xw = Some(xh);
     s.zw = Some(zh);
     s.aliw_deg = s.alih_deg;
