@@ -967,8 +967,51 @@ fn a_cambered_body_widest_at_the_nose_takes_its_potential_force_there() {
     assert!(r
         .warnings
         .iter()
-        .any(|w| matches!(w, BodyWarning::BluntNose { x } if *x == 0.0)));
+        .any(|w| matches!(w, BodyWarning::BluntNose)));
     assert!(r.cl.iter().chain(&r.cm).all(Option::is_some));
+}
+
+#[test]
+fn a_nose_already_near_its_largest_radius_is_not_refused() {
+    // The original finds the station of 0.96 rmax on the interval ending at the largest
+    // radius, extrapolating backwards when the radius already exceeds 0.96 rmax at its start.
+    // Where that lands at or before the nose, the station is where the radius first reaches
+    // 0.96 rmax: on a cone-cylinder X = 0, 1, 10, R = 0, 0.49, 0.5 it is 0.48/0.49 of the way
+    // up the cone (the extrapolation gave x = -8 and the body was refused); with the radius
+    // above 0.96 rmax at the first station (R = 0.49, 0.5, 0.3) the nose is blunt.
+    let body = |stations: &str| {
+        CONE_CYLINDER.replace(
+            "NX=5.0, X(1)=0.0,1.0,5.0,9.5,10.0, R(1)=0.0,0.5,0.5,0.5,0.5",
+            stations,
+        )
+    };
+    let cone = body(
+        "NX=3.0, X(1)=0.0,1.0,10.0, R(1)=0.0,0.49,0.5,
+   ZU(1)=0.0,0.49,0.5, ZL(1)=0.0,-0.49,-0.5",
+    );
+    let r = run_case(&case_of(&cone)).expect("computed");
+    let BodyTerms::Cambered(t) = &r.terms else {
+        panic!("cambered terms: {:?}", r.terms)
+    };
+    close("x96", t.forebody_station, 0.48 / 0.49, HAND);
+    assert!(!r
+        .warnings
+        .iter()
+        .any(|w| matches!(w, BodyWarning::BluntNose)));
+
+    let near = body(
+        "NX=3.0, X(1)=0.0,5.0,10.0, R(1)=0.49,0.5,0.3,
+   ZU(1)=0.49,0.5,0.3, ZL(1)=-0.49,-0.5,-0.3",
+    );
+    let r = run_case(&case_of(&near)).expect("computed");
+    let BodyTerms::Cambered(t) = &r.terms else {
+        panic!("cambered terms: {:?}", r.terms)
+    };
+    assert_eq!(t.potential_centre_over_length, 0.0);
+    assert!(r
+        .warnings
+        .iter()
+        .any(|w| matches!(w, BodyWarning::BluntNose)));
 }
 
 #[test]

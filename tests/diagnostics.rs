@@ -567,3 +567,28 @@ fn namelists_without_methods_are_named() {
         plain.diagnostics
     );
 }
+
+/// A namelist-level problem of a case is placed in that case, also when SAVE carried values of
+/// the namelist from an earlier case (their places are the earlier case's); a case with no
+/// component says so.
+#[test]
+fn namelist_problems_are_placed_in_their_own_case() {
+    let text = format!(
+        "{MINIMAL} $SYMFLP FTYPE=1.0, NDELTA=2.0, DELTA(1)=0.0,10.0$\nSAVE\nNEXT CASE\n $SYMFLP DELTA(1)=0.0,20.0$\n"
+    );
+    let d = read(&text);
+    let lines: Vec<usize> = d
+        .diagnostics
+        .iter()
+        .filter(|x| x.card.as_deref() == Some("SYMFLP"))
+        .map(|x| x.line)
+        .collect();
+    assert_eq!(lines, vec![3, 6], "{:?}", d.diagnostics);
+    assert!(
+        d.diagnostics
+            .iter()
+            .any(|x| x.to_string().contains("the case has no component")),
+        "{:?}",
+        d.diagnostics
+    );
+}

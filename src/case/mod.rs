@@ -627,8 +627,8 @@ const NOT_IMPLEMENTED: [(&str, &str); 8] = [
     ("JETPWR", "the jet power effects are not implemented: the pages are power-off, where the original adds the power increments"),
     ("GRNDEF", "the ground-effect methods are not implemented: the pages are out of ground effect, and the original's ground-effect pages are not computed"),
     ("CONTAB", "the control-tab methods are not implemented: their hinge moments are not computed"),
-    ("HYPEFF", "the hypersonic flap methods are not implemented: the case has no coefficients"),
-    ("TRNJET", "the transverse-jet control methods are not implemented: the case has no coefficients"),
+    ("HYPEFF", "the hypersonic flap methods are not implemented: the flap's increments are not computed"),
+    ("TRNJET", "the transverse-jet control methods are not implemented: the jet's increments are not computed"),
 ];
 
 /// How diagnostics name an airfoil card.
@@ -760,7 +760,7 @@ impl<'a> Checks<'a> {
     fn at(&self, card: &str, var: Option<&str>) -> (usize, usize) {
         match var {
             Some(v) => self.raw.origins.get(card, v),
-            None => self.raw.origins.first_in(card),
+            None => self.raw.origins.first_in(card, self.raw.first_line),
         }
         .unwrap_or((self.raw.first_line, 0))
     }
@@ -786,17 +786,24 @@ impl<'a> Checks<'a> {
         });
     }
 
-    /// A problem of a card as a whole, at its line.
-    fn at_line(&mut self, severity: Severity, line: usize, card: &str, message: String) {
+    /// A problem of a card as a whole (or of the case: no card), at a line.
+    fn at_line(
+        &mut self,
+        severity: Severity,
+        line: usize,
+        card: Option<&str>,
+        message: String,
+        hint: Option<&str>,
+    ) {
         self.out.push(Diagnostic {
             severity,
             file: self.file.to_string(),
             line,
             column: 0,
-            card: Some(card.to_string()),
+            card: card.map(str::to_string),
             variable: None,
             problem: DeckProblem::Physical { message },
-            hint: None,
+            hint: hint.map(str::to_string),
         });
     }
 
@@ -1308,7 +1315,7 @@ impl Case {
                     // the case runs.
                     if let Err(e) = NacaSection::from_card_with(card, self.five_digit, self.six_a) {
                         let message = format!("{} section: {e}", surface.name());
-                        c.at_line(Severity::Error, card.line, NACA_CARD, message);
+                        c.at_line(Severity::Error, card.line, Some(NACA_CARD), message, None);
                     }
                 }
                 None => {}
@@ -1317,6 +1324,23 @@ impl Case {
     }
 
     fn check(&self, c: &mut Checks) {
+        let components = [
+            self.body.is_some(),
+            self.wing.is_some(),
+            self.horizontal_tail.is_some(),
+            self.vertical_tail.is_some(),
+            self.ventral_fin.is_some(),
+            self.larwb.is_some(),
+        ];
+        if !components.contains(&true) {
+            c.at_line(
+                Severity::Warning,
+                c.raw.first_line,
+                None,
+                "the case has no component (a body, wing, tail, ventral fin or $LARWB): no coefficient is computed".into(),
+                Some("give $BODY, $WGPLNF, $HTPLNF, $VTPLNF, $VFPLNF or $LARWB"),
+            );
+        }
         for (name, what) in NOT_IMPLEMENTED {
             if self.other.contains_key(name) {
                 c.push(

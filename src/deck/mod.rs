@@ -103,15 +103,22 @@ impl Origins {
         Some(self.places[i].1)
     }
 
-    /// Where namelist `nl`'s first recorded assignment is (line, column): the nearest place
-    /// to its start the origins know.
-    pub fn first_in(&self, nl: &str) -> Option<(usize, usize)> {
+    /// Where namelist `nl`'s first recorded assignment from line `from` on is (line, column):
+    /// the nearest place to its start in a case beginning at `from`. Values a SAVE carried
+    /// from an earlier case are recorded where that case gave them: the earliest of those
+    /// when the case gives none of its own.
+    pub fn first_in(&self, nl: &str, from: usize) -> Option<(usize, usize)> {
         let n = schema::key(nl)?;
-        self.places
-            .iter()
-            .filter(|((k, _), _)| *k == n)
-            .map(|(_, at)| *at)
+        let places = || {
+            self.places
+                .iter()
+                .filter(move |((k, _), _)| *k == n)
+                .map(|(_, at)| *at)
+        };
+        places()
+            .filter(|(line, _)| *line >= from)
             .min()
+            .or_else(|| places().min())
     }
 
     /// Records that variable `var` of namelist `nl` was assigned at `at` (line, column). Names

@@ -102,7 +102,7 @@ fn camber_line_terms(shape: &BodyShape, zu: &[f64], zl: &[f64]) -> (f64, f64) {
 }
 
 /// The forebody up to the station where the radius first reaches 0.96 of its largest value
-/// (the original's X95), the largest being at station `imax` > 0.
+/// (the original's X95), the largest being at station `imax`.
 struct Forebody {
     /// The station, m, and its radius.
     x96: f64,
@@ -111,10 +111,29 @@ struct Forebody {
     area: f64,
 }
 
-fn forebody(shape: &BodyShape, imax: usize) -> Result<Forebody, &'static str> {
-    let r96 = FOREBODY_RADIUS_FRACTION * shape.r[imax];
-    let (x_a, r_a) = (shape.x[imax - 1], shape.r[imax - 1]);
-    let x96 = x_a + (shape.x[imax] - x_a) * (r96 - r_a) / (shape.r[imax] - r_a);
+/// None for a blunt nose: the radius reaches 0.96 of its largest value at the first station.
+///
+/// The original finds the station on the interval ending at the largest radius, extrapolating
+/// when the radius is already above 0.96 of it at the interval's start; where that puts it at
+/// or before the nose (its forebody would have no area, or it reads outside its arrays) the
+/// station is found where the radius first reaches the value.
+fn forebody(shape: &BodyShape, imax: usize) -> Result<Option<Forebody>, &'static str> {
+    let (x, r) = (&shape.x, &shape.r);
+    let r96 = FOREBODY_RADIUS_FRACTION * r[imax];
+    let on = |k: usize| x[k - 1] + (x[k] - x[k - 1]) * (r96 - r[k - 1]) / (r[k] - r[k - 1]);
+    let mut x96 = if imax > 0 {
+        on(imax)
+    } else {
+        f64::NEG_INFINITY
+    };
+    // At or before the nose, or not a number (a flat interval).
+    let ahead_of_nose = x96.partial_cmp(&x[0]) != Some(std::cmp::Ordering::Greater);
+    if ahead_of_nose {
+        match r.iter().position(|&rk| rk >= r96) {
+            Some(k) if k > 0 => x96 = on(k),
+            _ => return Ok(None),
+        }
+    }
     let i96 = shape
         .x
         .iter()
@@ -128,7 +147,7 @@ fn forebody(shape: &BodyShape, imax: usize) -> Result<Forebody, &'static str> {
     if area <= 0.0 || !area.is_finite() {
         return Err("no planform area ahead of the station of 0.96 of the largest radius");
     }
-    Ok(Forebody { x96, r96, area })
+    Ok(Some(Forebody { x96, r96, area }))
 }
 
 /// Normal force, pitching moment and drag due to lift of a cambered body at each angle of
@@ -197,16 +216,13 @@ pub fn cambered_body(
         (ratio, l / base_diameter)
     };
 
-    let forebody = if imax == 0 {
-        warnings.push(BodyWarning::BluntNose { x: shape.x[0] });
-        None
-    } else {
-        Some(
-            forebody(shape, imax).map_err(|reason| BodyMethodError::CamberedBodyUndefined {
-                reason: reason.into(),
-            })?,
-        )
-    };
+    let forebody =
+        forebody(shape, imax).map_err(|reason| BodyMethodError::CamberedBodyUndefined {
+            reason: reason.into(),
+        })?;
+    if forebody.is_none() {
+        warnings.push(BodyWarning::BluntNose);
+    }
     let alpha_v_deg = figures::read(
         figures::CROSSFLOW_ONSET,
         &[width_over_depth, base_fineness],

@@ -162,9 +162,9 @@ pub enum BodyWarning {
     AreaStep { x1: f64 },
     /// ZU and ZL are given at fewer stations than X.
     ContoursShort { given: usize, stations: usize },
-    /// The cambered body's radius is largest at its first station (a blunt nose), so there is
-    /// no station of 0.96 of the largest radius ahead of it.
-    BluntNose { x: f64 },
+    /// The cambered body's radius reaches 0.96 of its largest value at its first station (a
+    /// blunt nose), so the forebody ahead of that station has no length.
+    BluntNose,
 }
 
 impl fmt::Display for BodyWarning {
@@ -200,9 +200,9 @@ impl fmt::Display for BodyWarning {
                 f,
                 "ZU and ZL are given at {given} of the {stations} body stations: the others are taken as 0, as the original reads them"
             ),
-            BodyWarning::BluntNose { x } => write!(
+            BodyWarning::BluntNose => write!(
                 f,
-                "the radius is largest at the first station (a blunt nose): the potential normal force is taken at the nose, x = {x} m, where the area grows (the original reads outside its arrays for the station of 0.96 of the largest radius ahead of it)"
+                "the radius reaches 0.96 of its largest value at the first station (a blunt nose): the potential normal force is taken at the nose, where the area grows (the original reads outside its arrays or extrapolates before the nose there)"
             ),
         }
     }

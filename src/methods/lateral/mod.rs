@@ -95,7 +95,7 @@ pub enum LateralWarning {
     /// The exposed semispan equals the semispan (no body width at the wing root): the wing
     /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
     NoBodyWidthAtWing,
-    /// The wing's height over the body's half width at the wing, z_w/(d/2), lies outside
+    /// The wing's (or the tail's in its place) height over the body's half width there, z/(d/2), lies outside
     /// figure 5.2.1.1-7's range (−1 to 1, a wing that meets the body): the wing-height factor
     /// of the wing-body CYβ is extrapolated linearly, as in the original.
     WingHeightOutside { ratio: f64, factor: f64 },
@@ -126,7 +126,7 @@ impl fmt::Display for LateralWarning {
             ),
             LateralWarning::WingHeightOutside { ratio, factor } => write!(
                 f,
-                "figure 5.2.1.1-7: z_w/(d/2) = {} is outside the data (-1 to 1, a wing that meets the body; d = 2(SSPN - SSPNE)): the wing-height factor of CYB, {}, is extrapolated linearly (as in the original)",
+                "figure 5.2.1.1-7: z/(d/2) = {} is outside the data (-1 to 1, a surface that meets the body; d = 2(SSPN - SSPNE) of the wing, or of the tail in its place): the height factor of CYB, {}, is extrapolated linearly (as in the original)",
                 Query(*ratio),
                 Query(*factor)
             ),

@@ -51,7 +51,7 @@ use crate::case::Case;
 use crate::charts::ChartWarning;
 use crate::deck::cards::Surface;
 use crate::geometry::{body as body_geometry, planform as planform_geometry, Span};
-use crate::methods::body::subsonic_limit;
+use crate::methods::body::{subsonic_limit, BodyWarning};
 use crate::methods::wing::{WingMethodError, WingType, WingWarning};
 use crate::methods::wing_body::{wing_body, WingBody, WingBodyError, WingBodyWarning};
 
@@ -341,10 +341,23 @@ pub fn configuration(
         return Err(TailError::NoTail);
     }
     let wb = straight_wing_body(case, condition_index, alpha_deg)?;
+    // Of the wing-body's warnings, those the configuration's numbers carry without a page of
+    // their own: experimental data used, and the body's where its numbers are ours because
+    // the original's are undefined.
     let mut warnings: Vec<TailWarning> = wb
         .warnings
         .iter()
-        .filter(|w| matches!(w, WingBodyWarning::ExperimentalData { .. }))
+        .filter(|w| {
+            matches!(
+                w,
+                WingBodyWarning::ExperimentalData { .. }
+                    | WingBodyWarning::Body(
+                        BodyWarning::BluntNose
+                            | BodyWarning::AreaStep { .. }
+                            | BodyWarning::ConstantAreaToX0 { .. }
+                    )
+            )
+        })
         .cloned()
         .map(TailWarning::WingBody)
         .collect();
