@@ -13,7 +13,7 @@ use datcom::case::{Body, Case, FlightInput, Loop, Planform, Reference, Synthesis
 use datcom::deck::cards::{AirfoilCard, DerivUnit, NacaSeries, Surface};
 
 /// A straight-tapered planform: root and tip chords, semi-span and exposed semi-span (m),
-/// leading-edge sweep and dihedral (deg).
+/// sweep of the quarter-chord line (CHSTAT = 0.25) and dihedral (deg).
 fn planform(
     root: f64,
     tip: f64,
@@ -38,12 +38,7 @@ fn planform(
 
 /// A NACA 4-digit section on `surface`.
 fn naca4(surface: Surface, digits: &str) -> AirfoilCard {
-    AirfoilCard {
-        surface,
-        series: NacaSeries::Four,
-        designation: digits.into(),
-        line: 0,
-    }
+    AirfoilCard::new(surface, NacaSeries::Four, digits)
 }
 
 /// The example UAV of `namelists/example-uav.dcm`, built in code.

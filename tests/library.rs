@@ -93,3 +93,46 @@ fn what_a_case_built_in_code_does_not_need() {
     case.prepare();
     assert!(case.conditions.is_empty() && case.condition_warnings.is_empty());
 }
+
+/// Values a deck's checks refuse reach a case built in code unchecked: the methods refuse them
+/// (not computed, with a warning naming the value) instead of printing coefficients of 1e60,
+/// and a reference dimension that is not a number is none in the results.
+#[test]
+fn values_a_deck_would_refuse_are_refused_in_code() {
+    let run = |edit: &dyn Fn(&mut datcom::Case)| {
+        let mut case = build_case::example_uav();
+        edit(&mut case);
+        case.prepare();
+        datcom::results::run_case(&case)
+    };
+    for (what, edit) in [
+        (
+            "SAVSI",
+            &(|c: &mut datcom::Case| c.wing.as_mut().unwrap().savsi_deg = Some(90.0))
+                as &dyn Fn(&mut datcom::Case),
+        ),
+        ("SSPNE", &|c: &mut datcom::Case| {
+            c.wing.as_mut().unwrap().sspne = Some(7.0)
+        }),
+        ("CHRDTP", &|c: &mut datcom::Case| {
+            c.wing.as_mut().unwrap().chrdtp = Some(-0.5)
+        }),
+    ] {
+        let r = run(edit);
+        let page = &r.conditions[0];
+        assert!(
+            page.static_coefficients.cl.iter().all(Option::is_none),
+            "{what}: {:?}",
+            page.static_coefficients.cl
+        );
+        assert!(
+            r.warnings.iter().any(|w| w.contains(&format!("{what} = "))),
+            "{what}: {:?}",
+            r.warnings
+        );
+    }
+    // Not a number is not given: the wing's area is the reference, as without SREF.
+    let r = run(&|c: &mut datcom::Case| c.reference.area = Some(f64::NAN));
+    let wing_area = 2.0 * 1.20 * (0.44 + 0.32) / 2.0;
+    assert_eq!(r.reference.area, Some(wing_area));
+}

@@ -1213,9 +1213,7 @@ impl Case {
     ///     savsi_deg: Some(0.0), chstat: Some(0.25), planform_type: Some(1.0),
     ///     ..Planform::default()
     /// });
-    /// case.airfoils.push(AirfoilCard {
-    ///     surface: Surface::Wing, series: NacaSeries::Four, designation: "0012".into(), line: 0,
-    /// });
+    /// case.airfoils.push(AirfoilCard::new(Surface::Wing, NacaSeries::Four, "0012"));
     /// assert!(case.prepare().is_empty());
     /// let results = datcom::results::run_case(&case);
     /// let cl = &results.conditions[0].static_coefficients.cl;

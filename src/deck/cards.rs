@@ -113,6 +113,18 @@ pub struct AirfoilCard {
     pub line: usize,
 }
 
+impl AirfoilCard {
+    /// The card of a NACA section for a case built in code (no deck line).
+    pub fn new(surface: Surface, series: NacaSeries, designation: &str) -> AirfoilCard {
+        AirfoilCard {
+            surface,
+            series,
+            designation: designation.to_string(),
+            line: 0,
+        }
+    }
+}
+
 /// The control cards of one case.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct Cards {

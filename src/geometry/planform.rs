@@ -34,6 +34,58 @@ pub enum GeometryError {
     NotPositive { what: &'static str, value: f64 },
     #[error("the exposed semi-span SSPNE ({sspne}) must exceed the outboard panel's span SSPNOP ({sspnop})")]
     ExposedInsideBreak { sspne: f64, sspnop: f64 },
+    /// A value the deck's checks refuse, met in a case built in code (a deck with it has an
+    /// error already).
+    #[error("{what} = {value}: {rule}")]
+    Invalid {
+        what: &'static str,
+        value: f64,
+        rule: &'static str,
+    },
+}
+
+/// The angles (deg) the methods divide by the cosine of: they must lie strictly between −90°
+/// and 90°.
+const RIGHT_ANGLE_DEG: f64 = 90.0;
+
+/// What a case built in code can hold and a deck's checks refuse: a negative tip chord, an
+/// exposed semi-span beyond the semi-span, a sweep or dihedral of 90° or more, a value that is
+/// not a number.
+fn check_values(p: &Planform, sspn: f64) -> Result<(), GeometryError> {
+    let invalid = |what, value, rule| Err(GeometryError::Invalid { what, value, rule });
+    for (what, value) in [
+        ("CHRDTP", p.chrdtp),
+        ("CHRDBP", p.chrdbp),
+        ("SSPNE", p.sspne),
+    ] {
+        match value {
+            Some(v) if v < 0.0 || !v.is_finite() => {
+                return invalid(what, v, "must be a number, not negative");
+            }
+            _ => {}
+        }
+    }
+    if let Some(e) = p.sspne.filter(|e| *e > sspn * (1.0 + 1e-9)) {
+        return invalid(
+            "SSPNE",
+            e,
+            "the exposed semi-span must not exceed the semi-span SSPN",
+        );
+    }
+    for (what, value) in [
+        ("SAVSI", p.savsi_deg),
+        ("SAVSO", p.savso_deg),
+        ("DHDADI", p.dhdadi_deg),
+        ("DHDADO", p.dhdado_deg),
+    ] {
+        match value {
+            Some(v) if v.is_nan() || v.abs() >= RIGHT_ANGLE_DEG => {
+                return invalid(what, v, "must lie between -90 and 90 deg");
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 /// One trapezoid, or a set of them, reduced to the numbers DATCOM uses.
@@ -151,6 +203,7 @@ pub fn planform(p: &Planform, span: Span) -> Result<PlanformGeometry, GeometryEr
             return Err(GeometryError::NotPositive { what, value });
         }
     }
+    check_values(p, sspn)?;
     let sspne = p.sspne.unwrap_or(sspn);
     let chrdtp = p.chrdtp.unwrap_or(0.0);
     // No outboard panel when SSPNOP is absent, zero or negative (the original's test).
