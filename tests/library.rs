@@ -117,6 +117,9 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
         ("CHRDTP", &|c: &mut datcom::Case| {
             c.wing.as_mut().unwrap().chrdtp = Some(-0.5)
         }),
+        ("R(4)", &|c: &mut datcom::Case| {
+            c.body.as_mut().unwrap().r[3] = -0.6
+        }),
     ] {
         let r = run(edit);
         let page = &r.conditions[0];

@@ -28,6 +28,39 @@ pub enum BodyError {
     TooFewStations(usize),
     #[error("{0} has fewer values than X")]
     Short(&'static str),
+    /// A value a deck's checks refuse, met in a case built in code.
+    #[error("{what}({index}) = {value}: must be a number{rule}")]
+    Invalid {
+        what: &'static str,
+        index: usize,
+        value: f64,
+        rule: &'static str,
+    },
+}
+
+/// What a case built in code can hold and a deck's checks refuse: a station, radius, area or
+/// perimeter that is not a number, or a negative radius, area or perimeter.
+fn check_values(b: &Body) -> Result<(), BodyError> {
+    let arrays: [(&'static str, &[f64], &'static str); 6] = [
+        ("X", &b.x, ""),
+        ("R", &b.r, ", not negative"),
+        ("S", &b.s, ", not negative"),
+        ("P", &b.p, ", not negative"),
+        ("ZU", &b.zu, ""),
+        ("ZL", &b.zl, ""),
+    ];
+    for (what, values, rule) in arrays {
+        let bad = |v: f64| !v.is_finite() || (!rule.is_empty() && v < 0.0);
+        if let Some(index) = values.iter().position(|&v| bad(v)) {
+            return Err(BodyError::Invalid {
+                what,
+                index: index + 1,
+                value: values[index],
+                rule,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// A body's stations completed and its derived quantities, SI.
@@ -89,6 +122,7 @@ pub fn body(b: &Body) -> Result<BodyGeometry, BodyError> {
     if n < 2 {
         return Err(BodyError::TooFewStations(n));
     }
+    check_values(b)?;
     let e = b.ellip.filter(|e| *e > 0.0).unwrap_or(1.0);
     let take = |v: &[f64], name: &'static str| -> Result<Vec<f64>, BodyError> {
         if v.len() < n {
