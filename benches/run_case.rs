@@ -1,6 +1,7 @@
 //! Computing speed: one full-aircraft case (../shared/oracle/cases/uav_example, or the bundled
 //! example deck without ../shared) read and computed; and a sweep of 10 000 geometry variants
-//! (wing semi-span) computed from the library API on every core (rayon).
+//! (wing semi-span) computed from the library API on every core (rayon): from namelist values
+//! (each variant typed and checked as a deck's case is) and from typed cases edited in code.
 //! Run with `cargo bench --bench run_case`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -31,7 +32,9 @@ fn bench(c: &mut Criterion) {
             black_box(datcom::run(&deck))
         })
     });
-    // Variants: the first case with the wing semi-span scaled from 0.8 to 1.2.
+    // Variants: the first case with the wing semi-span scaled from 0.8 to 1.2, the exposed
+    // semi-span moved with it (the body's width at the wing stays; scaled alone, SSPNE would
+    // exceed SSPN below k = 0.94 and the wing would be refused).
     let raw = deck::read(&text, "bench.dcm");
     let Some(base) = raw.cases.first().cloned() else {
         return;
@@ -40,13 +43,17 @@ fn bench(c: &mut Criterion) {
         .map(|i| {
             let mut case = base.clone();
             let k = 0.8 + 0.4 * f64::from(i) / 10_000.0;
-            if let Some(Value::Numbers(v)) = case
-                .namelists
-                .get_mut("WGPLNF")
-                .and_then(|w| w.get_mut("SSPN"))
-            {
-                if let Some(Some(s)) = v.first_mut() {
-                    *s *= k;
+            if let Some(w) = case.namelists.get_mut("WGPLNF") {
+                let first = |w: &deck::NamelistValues, var: &str| match w.get(var) {
+                    Some(Value::Numbers(v)) => v.first().copied().flatten(),
+                    _ => None,
+                };
+                if let (Some(span), Some(exposed)) = (first(w, "SSPN"), first(w, "SSPNE")) {
+                    w.insert("SSPN".into(), Value::Numbers(vec![Some(span * k)]));
+                    w.insert(
+                        "SSPNE".into(),
+                        Value::Numbers(vec![Some(exposed + span * (k - 1.0))]),
+                    );
                 }
             }
             case
@@ -66,6 +73,34 @@ fn bench(c: &mut Criterion) {
             black_box(n)
         })
     });
+    // The same sweep on typed cases edited in code (a design tool's way: no namelists, no
+    // deck checks per variant); the exposed semi-span moves with the span, so the body's width
+    // at the wing stays.
+    let typed = datcom::read_deck(&text, "bench.dcm");
+    if let Some(base) = typed.cases.first() {
+        let variants: Vec<datcom::Case> = (0..10_000)
+            .map(|i| {
+                let mut case = base.clone();
+                let k = 0.8 + 0.4 * f64::from(i) / 10_000.0;
+                if let Some(w) = case.wing.as_mut() {
+                    if let (Some(span), Some(exposed)) = (w.sspn, w.sspne) {
+                        w.sspn = Some(span * k);
+                        w.sspne = Some(exposed + span * (k - 1.0));
+                    }
+                }
+                case
+            })
+            .collect();
+        group.bench_function("10 000 wing-span variants built in code, all cores", |b| {
+            b.iter(|| {
+                let n: usize = variants
+                    .par_iter()
+                    .map(|case| datcom::results::run_case(case).conditions.len())
+                    .sum();
+                black_box(n)
+            })
+        });
+    }
     group.finish();
 }
 
