@@ -943,6 +943,16 @@ fn a_step_in_the_area_places_x1_at_the_step() {
         .any(|w| matches!(w, BodyWarning::AreaStep { x1 } if *x1 == 4.0)));
 }
 
+/// A cambered body computed, with its method's terms.
+fn cambered(text: &str) -> (BodyAlone, datcom::methods::body::Cambered) {
+    let r = run_case(&case_of(text)).expect("the cambered body is computed");
+    let BodyTerms::Cambered(t) = &r.terms else {
+        panic!("cambered terms: {:?}", r.terms)
+    };
+    let t = t.clone();
+    (r, t)
+}
+
 #[test]
 fn a_cambered_body_widest_at_the_nose_takes_its_potential_force_there() {
     // The cambered-body method puts the potential normal force on the forebody up to the
@@ -955,10 +965,7 @@ fn a_cambered_body_widest_at_the_nose_takes_its_potential_force_there() {
         "NX=3.0, X(1)=0.0,5.0,10.0, R(1)=0.5,0.4,0.3,
    ZU(1)=0.5,0.4,0.3, ZL(1)=-0.5,-0.4,-0.3",
     );
-    let r = run_case(&case_of(&text)).expect("a blunt cambered body is computed");
-    let BodyTerms::Cambered(t) = &r.terms else {
-        panic!("cambered terms: {:?}", r.terms)
-    };
+    let (r, t) = cambered(&text);
     assert_eq!(t.forebody_station, 0.0);
     assert_eq!(t.forebody_planform_area, 0.0);
     assert_eq!(t.potential_centre_over_length, 0.0);
@@ -989,10 +996,7 @@ fn a_nose_already_near_its_largest_radius_is_not_refused() {
         "NX=3.0, X(1)=0.0,1.0,10.0, R(1)=0.0,0.49,0.5,
    ZU(1)=0.0,0.49,0.5, ZL(1)=0.0,-0.49,-0.5",
     );
-    let r = run_case(&case_of(&cone)).expect("computed");
-    let BodyTerms::Cambered(t) = &r.terms else {
-        panic!("cambered terms: {:?}", r.terms)
-    };
+    let (r, t) = cambered(&cone);
     close("x96", t.forebody_station, 0.48 / 0.49, HAND);
     assert!(!r
         .warnings
@@ -1003,10 +1007,7 @@ fn a_nose_already_near_its_largest_radius_is_not_refused() {
         "NX=3.0, X(1)=0.0,5.0,10.0, R(1)=0.49,0.5,0.3,
    ZU(1)=0.49,0.5,0.3, ZL(1)=-0.49,-0.5,-0.3",
     );
-    let r = run_case(&case_of(&near)).expect("computed");
-    let BodyTerms::Cambered(t) = &r.terms else {
-        panic!("cambered terms: {:?}", r.terms)
-    };
+    let (r, t) = cambered(&near);
     assert_eq!(t.potential_centre_over_length, 0.0);
     assert!(r
         .warnings
