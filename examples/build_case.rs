@@ -1,10 +1,10 @@
 //! Library use without a deck: a whole aircraft built in code (the bundled example UAV of
 //! `namelists/example-uav.dcm`: body, wing, horizontal and vertical tail, NACA sections), run,
-//! and read: every coefficient of the configuration's pages, then the terms behind them from
-//! the methods themselves (the wing's lift-curve slope, zero-lift angle and maximum lift, and
-//! the downwash at the tail).
+//! checked as its deck would be, and read: every coefficient of the configuration's pages, then
+//! the terms behind them from the methods themselves (the wing's lift-curve slope, zero-lift
+//! angle and maximum lift, and the downwash at the tail).
 //!
-//! `cargo run --example build_case`
+//! `cargo run --example build_case` (`-- uav.dcm` also writes the case as a deck)
 //!
 //! Everything is SI inside the library (metres, newtons, pascals, kelvins); angles are in
 //! degrees and derivatives per radian.
@@ -98,8 +98,17 @@ pub fn example_uav() -> Case {
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut case = example_uav();
-    for w in case.prepare() {
-        eprintln!("warning: {w}");
+    case.prepare();
+    // The checks of `datcom-rs check` on the case as its deck would give it.
+    for d in case.diagnose() {
+        if d.severity != datcom::Severity::Note {
+            eprintln!("{d}");
+        }
+    }
+    // And that deck, for the original program or for keeping.
+    if let Some(path) = std::env::args().nth(1) {
+        std::fs::write(&path, datcom::deck::writer::write_case(&case.to_raw()))?;
+        eprintln!("wrote {path}");
     }
 
     // Every coefficient: one page per flight condition (with BUILD, one per component too).

@@ -1,6 +1,8 @@
 //! The library without a deck: a case built in code (`examples/build_case.rs`) computes as the
 //! same aircraft read from its deck.
 
+mod common;
+
 // The example's `main` is not called here, only its case.
 #[allow(dead_code)]
 #[path = "../examples/build_case.rs"]
@@ -138,4 +140,118 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
     let r = run(&|c: &mut datcom::Case| c.reference.area = Some(f64::NAN));
     let wing_area = 2.0 * 1.20 * (0.44 + 0.32) / 2.0;
     assert_eq!(r.reference.area, Some(wing_area));
+}
+
+/// Relative difference allowed between a value and the same value written in a deck's units and
+/// read back: the unit conversions' rounding (a few units in the last place of f64).
+const ROUND_TRIP: f64 = 1e-12;
+
+/// `a` and `b` equal, numbers within [`ROUND_TRIP`]; the path of the first difference.
+fn same(a: &serde_json::Value, b: &serde_json::Value, path: &str) -> Result<(), String> {
+    use serde_json::Value as J;
+    match (a, b) {
+        (J::Number(x), J::Number(y)) => {
+            let (x, y) = (
+                x.as_f64().unwrap_or(f64::NAN),
+                y.as_f64().unwrap_or(f64::NAN),
+            );
+            if (x - y).abs() <= ROUND_TRIP * x.abs().max(y.abs()) {
+                Ok(())
+            } else {
+                Err(format!("{path}: {x} != {y}"))
+            }
+        }
+        (J::Array(x), J::Array(y)) if x.len() == y.len() => x
+            .iter()
+            .zip(y)
+            .enumerate()
+            .try_for_each(|(i, (x, y))| same(x, y, &format!("{path}[{i}]"))),
+        (J::Object(x), J::Object(y)) if x.len() == y.len() => x
+            .iter()
+            .try_for_each(|(k, v)| same(v, y.get(k).unwrap_or(&J::Null), &format!("{path}.{k}"))),
+        _ if a == b => Ok(()),
+        _ => Err(format!("{path}: {a} != {b}")),
+    }
+}
+
+/// Every case of every deck without errors (the bundled ones; the oracle's and the corpus's when
+/// ../shared is there), written as namelists and cards and read back, is the same case: `to_raw` writes
+/// every typed value, in the deck's units. A case's deck diagnostics from `diagnose` are those
+/// of the deck's own checks (without the reader's, which need the text).
+#[test]
+fn every_case_written_as_a_deck_reads_back_the_same() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut decks = common::files(&root.join("namelists"));
+    if let Some(dir) = common::shared_dir(
+        "oracle/cases",
+        "every_case_written_as_a_deck_reads_back_the_same",
+    ) {
+        decks.extend(
+            std::fs::read_dir(dir)
+                .into_iter()
+                .flatten()
+                .flatten()
+                .map(|e| e.path().join("input.dcm")),
+        );
+    }
+    if let Some(dir) = common::shared_dir(
+        "corpus/decks",
+        "every_case_written_as_a_deck_reads_back_the_same",
+    ) {
+        decks.extend(common::files(&dir));
+    }
+    let mut cases = 0;
+    for path in &decks {
+        let deck = datcom::read_deck(&common::text(path), &path.display().to_string());
+        // A deck with errors lost the values the reader refused: not the case it meant.
+        if deck.diagnostics.iter().any(|d| d.is_error()) {
+            continue;
+        }
+        for case in &deck.cases {
+            let (again, _) = datcom::Case::from_raw(&case.to_raw(), "again");
+            let a = serde_json::to_value(case).expect("a case serializes");
+            let b = serde_json::to_value(&again).expect("a case serializes");
+            if let Err(e) = same(&a, &b, "case") {
+                panic!("{} case {}: {e}", path.display(), case.number);
+            }
+            cases += 1;
+        }
+    }
+    assert!(cases >= 6, "{cases} cases");
+    eprintln!("{cases} cases of {} decks read back the same", decks.len());
+}
+
+/// A case built in code is checked as its deck would be: the example UAV is clean, and an
+/// exposed semi-span beyond the semi-span is the deck's error, named with its variable.
+#[test]
+fn a_case_built_in_code_is_checked_as_a_deck() {
+    let mut case = build_case::example_uav();
+    case.prepare();
+    let errors = |case: &datcom::Case| -> Vec<String> {
+        case.diagnose()
+            .iter()
+            .filter(|d| d.is_error())
+            .map(ToString::to_string)
+            .collect()
+    };
+    assert_eq!(errors(&case), Vec::<String>::new());
+    if let Some(w) = case.wing.as_mut() {
+        w.sspne = Some(7.0);
+    }
+    let e = errors(&case);
+    assert!(e.iter().any(|e| e.contains("[WGPLNF SSPNE]")), "{e:?}");
+    // The deck it writes is read by the reader as this case.
+    let text = datcom::deck::writer::write_case(&build_case::example_uav().to_raw());
+    let read = datcom::read_deck(&text, "written.dcm");
+    assert!(
+        !read.diagnostics.iter().any(|d| d.is_error()),
+        "{:?}",
+        read.diagnostics
+    );
+    let mut prepared = build_case::example_uav();
+    prepared.prepare();
+    assert_eq!(
+        datcom::results::run_case(&read.cases[0]).conditions.len(),
+        datcom::results::run_case(&prepared).conditions.len()
+    );
 }

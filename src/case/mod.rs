@@ -7,6 +7,7 @@
 //! newtons; angles stay in degrees. Namelists not yet used by any method (flaps, power, ground
 //! effect, ...) are kept as read, in the deck's units, in [`Case::other`].
 
+mod deck_form;
 pub mod units;
 
 use std::collections::BTreeMap;
@@ -1259,7 +1260,7 @@ impl Case {
     /// pressure and temperature are not given; `nalt_given` is set when altitudes are given).
     /// Returns what was assumed or changed (the condition warnings are also kept in
     /// `condition_warnings`). Without `flight` the case has no condition. The deck checks of
-    /// `datcom-rs check` are not run: they read the values as a deck writes them.
+    /// `datcom-rs check` are [`Case::diagnose`]; [`Case::to_raw`] writes the case as a deck.
     pub fn prepare(&mut self) -> Vec<String> {
         // In code the altitudes given are the altitudes (a deck's NALT counts them).
         if let Some(f) = self.flight.as_mut() {

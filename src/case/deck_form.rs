@@ -1,0 +1,357 @@
+//! A typed case written back as the namelists and cards of a deck (in the case's units): so
+//! that a case built in code can be checked as a deck is, and written as a deck for the
+//! original program or for keeping.
+
+use std::collections::BTreeMap;
+
+use super::{units, Case, Loop, Planform, SectionInput, PLANFORMS, SECTION_NAMELISTS};
+use crate::deck::cards::{DerivUnit, Dim};
+use crate::deck::schema::{self, Dimension};
+use crate::deck::{NamelistValues, RawCase, Value};
+
+/// The namelists of one case being written, in the case's units.
+struct Namelists<'a> {
+    case: &'a Case,
+    /// SYNTHS SCALE as the case applies it (1 without).
+    scale: f64,
+    out: BTreeMap<String, NamelistValues>,
+}
+
+impl Namelists<'_> {
+    /// `si` in the deck's units of `nl`'s `var`: the inverse of reading it (the unit of the
+    /// case's DIM, and SCALE for the geometry the schema marks as scaled).
+    fn deck_units(&self, nl: &str, var: &str, si: f64) -> f64 {
+        let Some(spec) = schema::table(nl).and_then(|t| t.var(var)) else {
+            return si;
+        };
+        let scale = match spec.dimension {
+            Dimension::Length if spec.scaled => self.scale,
+            Dimension::Area if spec.scaled => self.scale * self.scale,
+            _ => 1.0,
+        };
+        units::from_si(si / scale, self.case.dim, spec.dimension)
+    }
+
+    fn put(&mut self, nl: &str, var: &str, value: Value) {
+        self.out
+            .entry(nl.to_string())
+            .or_default()
+            .insert(var.to_string(), value);
+    }
+
+    /// An array (nothing when empty), converted from SI.
+    fn array(&mut self, nl: &str, var: &str, si: &[f64]) {
+        if si.is_empty() {
+            return;
+        }
+        let v = si
+            .iter()
+            .map(|&x| Some(self.deck_units(nl, var, x)))
+            .collect();
+        self.put(nl, var, Value::Numbers(v));
+    }
+
+    fn real(&mut self, nl: &str, var: &str, si: Option<f64>) {
+        if let Some(x) = si {
+            self.array(nl, var, &[x]);
+        }
+    }
+
+    /// A count (NMACH, NALPHA, NX ...) of `n` values; nothing for none.
+    fn count(&mut self, nl: &str, var: &str, n: usize) {
+        if n > 0 {
+            self.put(nl, var, Value::Numbers(vec![Some(n as f64)]));
+        }
+    }
+
+    fn logical(&mut self, nl: &str, var: &str, value: Option<bool>) {
+        if let Some(b) = value {
+            self.put(nl, var, Value::Logicals(vec![Some(b)]));
+        }
+    }
+
+    /// Touches a namelist so that it is present (the case has it) even with no value.
+    fn present(&mut self, nl: &str) {
+        self.out.entry(nl.to_string()).or_default();
+    }
+
+    fn flight(&mut self) {
+        let Some(f) = &self.case.flight else {
+            return;
+        };
+        const NL: &str = "FLTCON";
+        self.present(NL);
+        self.count(NL, "NMACH", f.mach.len().max(f.velocity.len()));
+        self.array(NL, "MACH", &f.mach);
+        self.array(NL, "VINF", &f.velocity);
+        self.array(NL, "RNNUB", &f.reynolds_per_length);
+        // NALT as the deck had it (without it, LOOP=1 does not check it against NMACH).
+        if f.nalt_given {
+            self.count(NL, "NALT", f.altitude.len().max(f.pressure.len()));
+        }
+        self.array(NL, "ALT", &f.altitude);
+        self.array(NL, "PINF", &f.pressure);
+        self.array(NL, "TINF", &f.temperature);
+        self.count(NL, "NALPHA", f.alpha_deg.len());
+        self.array(NL, "ALSCHD", &f.alpha_deg);
+        let loop_mode = match f.loop_mode {
+            Loop::Together => None,
+            Loop::AltitudeOuter => Some(2.0),
+            Loop::MachOuter => Some(3.0),
+        };
+        self.real(NL, "LOOP", loop_mode);
+        self.real(NL, "WT", f.weight);
+        self.real(NL, "GAMMA", f.gamma_deg);
+        self.real(NL, "TR", f.transition_strips.then_some(1.0));
+        self.real(NL, "STMACH", f.stmach);
+        self.real(NL, "TSMACH", f.tsmach);
+        self.logical(NL, "HYPERS", f.hypersonic.then_some(true));
+    }
+
+    fn reference(&mut self) {
+        const NL: &str = "OPTINS";
+        let r = &self.case.reference;
+        for (var, v) in [
+            ("SREF", r.area),
+            ("CBARR", r.chord),
+            ("BLREF", r.span),
+            ("ROUGFC", r.roughness),
+        ] {
+            self.real(NL, var, v);
+        }
+    }
+
+    fn synthesis(&mut self) {
+        let Some(s) = &self.case.synthesis else {
+            return;
+        };
+        const NL: &str = "SYNTHS";
+        self.present(NL);
+        for (var, v) in [
+            ("XCG", s.xcg),
+            ("ZCG", s.zcg),
+            ("XW", s.xw),
+            ("ZW", s.zw),
+            ("ALIW", s.aliw_deg),
+            ("XH", s.xh),
+            ("ZH", s.zh),
+            ("ALIH", s.alih_deg),
+            ("XV", s.xv),
+            ("ZV", s.zv),
+            ("XVF", s.xvf),
+            ("ZVF", s.zvf),
+            ("YV", s.yv),
+            ("YF", s.yf),
+            ("PHIV", s.phiv_deg),
+            ("PHIF", s.phif_deg),
+            ("HINAX", s.hinax),
+            ("SCALE", s.scale),
+        ] {
+            self.real(NL, var, v);
+        }
+        // Up is the default.
+        self.logical(NL, "VERTUP", (!s.vertup).then_some(false));
+    }
+
+    fn body(&mut self) {
+        let Some(b) = &self.case.body else {
+            return;
+        };
+        const NL: &str = "BODY";
+        self.present(NL);
+        self.count(NL, "NX", b.x.len());
+        for (var, v) in [
+            ("X", &b.x),
+            ("S", &b.s),
+            ("P", &b.p),
+            ("R", &b.r),
+            ("ZU", &b.zu),
+            ("ZL", &b.zl),
+        ] {
+            self.array(NL, var, v);
+        }
+        for (var, v) in [
+            ("BNOSE", b.bnose),
+            ("BTAIL", b.btail),
+            ("BLN", b.bln),
+            ("BLA", b.bla),
+            ("DS", b.ds),
+            ("ITYPE", b.itype),
+            ("METHOD", b.method),
+            ("ELLIP", b.ellip),
+        ] {
+            self.real(NL, var, v);
+        }
+    }
+
+    fn planform(&mut self, nl: &str, p: &Planform) {
+        self.present(nl);
+        for (var, v) in [
+            ("CHRDR", p.chrdr),
+            ("CHRDBP", p.chrdbp),
+            ("CHRDTP", p.chrdtp),
+            ("SSPN", p.sspn),
+            ("SSPNE", p.sspne),
+            ("SSPNOP", p.sspnop),
+            ("SSPNDD", p.sspndd),
+            ("SAVSI", p.savsi_deg),
+            ("SAVSO", p.savso_deg),
+            ("CHSTAT", p.chstat),
+            ("TWISTA", p.twista_deg),
+            ("DHDADI", p.dhdadi_deg),
+            ("DHDADO", p.dhdado_deg),
+            ("TYPE", p.planform_type),
+            ("SWAFP", p.swafp_deg),
+        ] {
+            self.real(nl, var, v);
+        }
+    }
+
+    fn section(&mut self, nl: &str, s: &SectionInput) {
+        self.present(nl);
+        // Scalars are kept as the deck gives them.
+        for (var, &x) in &s.scalars {
+            self.put(nl, var, Value::Numbers(vec![Some(x)]));
+        }
+        if !s.scalars.contains_key("NPTS") {
+            self.count(nl, "NPTS", s.xcord.len());
+        }
+        for (var, v) in [
+            ("XCORD", &s.xcord),
+            ("YUPPER", &s.yupper),
+            ("YLOWER", &s.ylower),
+            ("MEAN", &s.mean),
+            ("THICK", &s.thick),
+        ] {
+            self.array(nl, var, v);
+        }
+        for (var, v) in &s.per_mach {
+            self.array(nl, var, v);
+        }
+        self.logical(nl, "CAMBER", s.camber);
+    }
+
+    fn twin_panels(&mut self) {
+        let Some(t) = &self.case.twin_panels else {
+            return;
+        };
+        const NL: &str = "TVTPAN";
+        self.present(NL);
+        for (var, v) in [
+            ("BVP", t.bvp),
+            ("BV", t.bv),
+            ("BDV", t.bdv),
+            ("BH", t.bh),
+            ("SV", t.sv),
+            ("VPHITE", t.vphite),
+            ("VLP", t.vlp),
+            ("ZP", t.zp),
+        ] {
+            self.real(NL, var, v);
+        }
+    }
+
+    fn larwb(&mut self) {
+        let Some(l) = &self.case.larwb else {
+            return;
+        };
+        const NL: &str = "LARWB";
+        self.present(NL);
+        for (var, v) in [
+            ("SREF", l.sref),
+            ("L", l.length),
+            ("XCG", l.xcg),
+            ("ZB", l.zb),
+            ("DELTEP", l.deltep_deg),
+            ("SFRONT", l.sfront),
+            ("AR", l.aspect_ratio),
+            ("R3LEOB", l.r3leob),
+            ("DELTAL", l.deltal_deg),
+            ("SWET", l.swet),
+            ("PERBAS", l.perbas),
+            ("SBASE", l.sbase),
+            ("HB", l.hb),
+            ("BB", l.bb),
+            ("THETAD", l.thetad_deg),
+            ("SBS", l.sbs),
+            ("SBSLB", l.sbslb),
+            ("XCENSB", l.xcensb),
+            ("XCENW", l.xcenw),
+        ] {
+            self.real(NL, var, v);
+        }
+        self.logical(NL, "BLF", l.blf);
+        self.logical(NL, "ROUNDN", l.roundn);
+    }
+}
+
+impl Case {
+    /// The case as a deck gives it: its namelists in the case's units (`dim`, and SYNTHS
+    /// SCALE for the scaled geometry), its control and airfoil cards. Written with
+    /// [`crate::deck::writer::write_case`] it is a deck for the original program; read back
+    /// ([`Case::from_raw`]) it is this case again, up to the rounding of the unit conversion.
+    /// A case built in code is checked as a deck is with [`Case::diagnose`].
+    pub fn to_raw(&self) -> RawCase {
+        let scale = self
+            .synthesis
+            .as_ref()
+            .and_then(|s| s.scale)
+            .filter(|s| *s > 0.0)
+            .unwrap_or(1.0);
+        let mut n = Namelists {
+            case: self,
+            scale,
+            out: BTreeMap::new(),
+        };
+        n.flight();
+        n.reference();
+        n.synthesis();
+        n.body();
+        for ((pl, _), p) in PLANFORMS.iter().zip([
+            &self.wing,
+            &self.horizontal_tail,
+            &self.vertical_tail,
+            &self.ventral_fin,
+        ]) {
+            if let Some(p) = p {
+                n.planform(pl, p);
+            }
+        }
+        for (sc, surface) in SECTION_NAMELISTS {
+            if let Some(s) = self.sections.get(surface.name()) {
+                n.section(sc, s);
+            }
+        }
+        n.twin_panels();
+        n.larwb();
+        let mut namelists = n.out;
+        for (name, values) in &self.other {
+            namelists.insert(name.clone(), values.clone());
+        }
+        // DIM and DERIV cards where the units are not the defaults a deck without them has.
+        let mut cards = self.cards.clone();
+        if cards.dim.is_none() && self.dim != Dim::default() {
+            cards.dim = Some(self.dim);
+        }
+        if cards.deriv.is_none() && self.deriv != DerivUnit::default() {
+            cards.deriv = Some(self.deriv);
+        }
+        RawCase {
+            number: self.number,
+            first_line: self.first_line,
+            caseid: self.caseid.clone(),
+            namelists,
+            cards,
+            airfoils: self.airfoils.clone(),
+            save: self.save,
+            origins: Default::default(),
+        }
+    }
+
+    /// The checks of `datcom-rs check` on this case as its deck would give it
+    /// ([`Case::to_raw`]): for a case built in code, what a deck with its values would be told
+    /// (errors where the methods refuse part of it). The places are line 0: there is no deck.
+    pub fn diagnose(&self) -> Vec<crate::error::Diagnostic> {
+        Case::from_raw(&self.to_raw(), "case").1
+    }
+}
