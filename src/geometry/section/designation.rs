@@ -103,7 +103,7 @@ pub(crate) fn parse(series: NacaSeries, text: &str) -> Result<Designation, Secti
 /// The digits of `s`, when it is digits only.
 fn digits(s: &str) -> Option<Vec<u8>> {
     s.bytes()
-        .map(|b| b.is_ascii_digit().then_some(b - b'0'))
+        .map(|b| b.is_ascii_digit().then(|| b - b'0'))
         .collect()
 }
 
@@ -313,6 +313,25 @@ impl Designation {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Characters below '0' among the digits are refused, not an overflow of the digit's value
+    /// (a debug build panicked: the property test's mutated decks, once `check` read every
+    /// designation).
+    #[test]
+    fn characters_below_zero_are_not_digits() {
+        for text in ["0,12", "00.2", "0+12", "23 12", "6,-012", "1,-012"] {
+            for series in [
+                NacaSeries::One,
+                NacaSeries::Four,
+                NacaSeries::Five,
+                NacaSeries::Six,
+                NacaSeries::Supersonic,
+            ] {
+                let _ = parse(series, text);
+            }
+        }
+        assert!(parse(NacaSeries::Four, "0,12").is_err());
+    }
 
     fn title(series: NacaSeries, text: &str) -> String {
         parse(series, text).map(|d| d.title()).unwrap_or_default()
