@@ -240,6 +240,19 @@ fn a_case_built_in_code_is_checked_as_a_deck() {
     }
     let e = errors(&case);
     assert!(e.iter().any(|e| e.contains("[WGPLNF SSPNE]")), "{e:?}");
+    // What only the reader sees of the written deck: more angles than ALSCHD holds, a value
+    // that is not a number.
+    let mut many = build_case::example_uav();
+    if let Some(f) = many.flight.as_mut() {
+        f.alpha_deg = (0..30).map(f64::from).collect();
+    }
+    let e = errors(&many);
+    assert!(e.iter().any(|e| e.contains("ALSCHD")), "{e:?}");
+    let mut nan = build_case::example_uav();
+    if let Some(w) = nan.wing.as_mut() {
+        w.savsi_deg = Some(f64::NAN);
+    }
+    assert!(!errors(&nan).is_empty());
     // The deck it writes is read by the reader as this case.
     let text = datcom::deck::writer::write_case(&build_case::example_uav().to_raw());
     let read = datcom::read_deck(&text, "written.dcm");
@@ -254,4 +267,35 @@ fn a_case_built_in_code_is_checked_as_a_deck() {
         datcom::results::run_case(&read.cases[0]).conditions.len(),
         datcom::results::run_case(&prepared).conditions.len()
     );
+}
+
+/// Edits of a case read from a deck are what its deck is written with: the units (a metric
+/// DIM for a deck in feet), the scale, the low-aspect-ratio wing-body; the values are written
+/// as the shortest decimals that read back exactly.
+#[test]
+fn edits_are_what_the_deck_is_written_with() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let deck = datcom::read_deck(&common::text(&root.join("namelists/navion.dcm")), "navion");
+    let mut case = deck.cases[0].clone();
+    assert_eq!(case.dim, datcom::deck::cards::Dim::Ft);
+    let span = case.wing.as_ref().and_then(|w| w.sspn);
+    case.dim = datcom::deck::cards::Dim::M;
+    let (again, _) = datcom::Case::from_raw(&case.to_raw(), "again");
+    assert_eq!(again.dim, datcom::deck::cards::Dim::M);
+    assert_eq!(again.wing.as_ref().and_then(|w| w.sspn), span);
+
+    let mut scaled = deck.cases[0].clone();
+    scaled.scale = 2.0;
+    let raw = scaled.to_raw();
+    let (again, _) = datcom::Case::from_raw(&raw, "again");
+    assert_eq!(again.scale, 2.0);
+    assert_eq!(again.wing.as_ref().and_then(|w| w.sspn), span);
+
+    let text = datcom::deck::writer::write_case(&deck.cases[0].to_raw());
+    let long = text
+        .split([',', '=', '\n', ' '])
+        .filter(|t| t.parse::<f64>().is_ok())
+        .filter(|t| t.len() > 12)
+        .collect::<Vec<_>>();
+    assert!(long.is_empty(), "numbers written long: {long:?}");
 }

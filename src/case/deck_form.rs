@@ -9,6 +9,9 @@ use crate::deck::cards::{DerivUnit, Dim};
 use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, Value};
 
+/// The most significant digits a written value is tried with (an f64 needs 17).
+const SIGNIFICANT_DIGITS: usize = 17;
+
 /// The namelists of one case being written, in the case's units.
 struct Namelists<'a> {
     case: &'a Case,
@@ -19,7 +22,9 @@ struct Namelists<'a> {
 
 impl Namelists<'_> {
     /// `si` in the deck's units of `nl`'s `var`: the inverse of reading it (the unit of the
-    /// case's DIM, and SCALE for the geometry the schema marks as scaled).
+    /// case's DIM, and SCALE for the geometry the schema marks as scaled), as the shortest
+    /// decimal that reads back to `si` exactly (184.0, not 184.00000000000003), else the
+    /// nearest value.
     fn deck_units(&self, nl: &str, var: &str, si: f64) -> f64 {
         let Some(spec) = schema::table(nl).and_then(|t| t.var(var)) else {
             return si;
@@ -29,7 +34,13 @@ impl Namelists<'_> {
             Dimension::Area if spec.scaled => self.scale * self.scale,
             _ => 1.0,
         };
-        units::from_si(si / scale, self.case.dim, spec.dimension)
+        let (dim, dimension) = (self.case.dim, spec.dimension);
+        let deck = units::from_si(si / scale, dim, dimension);
+        let read = |d: f64| units::to_si(d, dim, dimension) * scale;
+        (1..=SIGNIFICANT_DIGITS)
+            .filter_map(|digits| format!("{deck:.*e}", digits - 1).parse::<f64>().ok())
+            .find(|&d| read(d) == si)
+            .unwrap_or(deck)
     }
 
     fn put(&mut self, nl: &str, var: &str, value: Value) {
@@ -61,6 +72,13 @@ impl Namelists<'_> {
     fn count(&mut self, nl: &str, var: &str, n: usize) {
         if n > 0 {
             self.put(nl, var, Value::Numbers(vec![Some(n as f64)]));
+        }
+    }
+
+    /// A value written as it is (no unit: SCALE itself).
+    fn put_plain(&mut self, nl: &str, var: &str, value: Option<f64>) {
+        if let Some(x) = value {
+            self.put(nl, var, Value::Numbers(vec![Some(x)]));
         }
     }
 
@@ -145,10 +163,12 @@ impl Namelists<'_> {
             ("PHIV", s.phiv_deg),
             ("PHIF", s.phif_deg),
             ("HINAX", s.hinax),
-            ("SCALE", s.scale),
         ] {
             self.real(NL, var, v);
         }
+        // The scale the case applies ([`Case::scale`]), given where the case gives one.
+        let scale = (s.scale.is_some() || self.scale != 1.0).then_some(self.scale);
+        self.put_plain(NL, "SCALE", scale);
         // Up is the default.
         self.logical(NL, "VERTUP", (!s.vertup).then_some(false));
     }
@@ -292,11 +312,8 @@ impl Case {
     /// ([`Case::from_raw`]) it is this case again, up to the rounding of the unit conversion.
     /// A case built in code is checked as a deck is with [`Case::diagnose`].
     pub fn to_raw(&self) -> RawCase {
-        let scale = self
-            .synthesis
-            .as_ref()
-            .and_then(|s| s.scale)
-            .filter(|s| *s > 0.0)
+        let scale = Some(self.scale)
+            .filter(|s| *s > 0.0 && s.is_finite())
             .unwrap_or(1.0);
         let mut n = Namelists {
             case: self,
@@ -325,15 +342,23 @@ impl Case {
         n.twin_panels();
         n.larwb();
         let mut namelists = n.out;
+        // The namelists kept as read, unless typed here too ($LARWB is both: the typed values
+        // are the ones the methods use, and an edit of them is what is written).
         for (name, values) in &self.other {
-            namelists.insert(name.clone(), values.clone());
+            namelists
+                .entry(name.clone())
+                .or_insert_with(|| values.clone());
         }
-        // DIM and DERIV cards where the units are not the defaults a deck without them has.
+        if self.larwb.is_none() {
+            namelists.remove("LARWB");
+        }
+        // DIM and DERIV cards for the case's units (a card kept from the deck could say
+        // other units than the values are written in).
         let mut cards = self.cards.clone();
-        if cards.dim.is_none() && self.dim != Dim::default() {
+        if cards.dim.is_some() || self.dim != Dim::default() {
             cards.dim = Some(self.dim);
         }
-        if cards.deriv.is_none() && self.deriv != DerivUnit::default() {
+        if cards.deriv.is_some() || self.deriv != DerivUnit::default() {
             cards.deriv = Some(self.deriv);
         }
         RawCase {
@@ -348,10 +373,14 @@ impl Case {
         }
     }
 
-    /// The checks of `datcom-rs check` on this case as its deck would give it
-    /// ([`Case::to_raw`]): for a case built in code, what a deck with its values would be told
-    /// (errors where the methods refuse part of it). The places are line 0: there is no deck.
+    /// What `datcom-rs check` says of this case's deck: the deck [`Case::to_raw`] gives,
+    /// written ([`crate::deck::writer::write_case`]) and read (reader and case checks, with
+    /// the library's default reading rules). For a case built in code, what a deck with its
+    /// values would be told: errors where the methods refuse part of it, a value that is not a
+    /// number, more values than an array holds, text beyond column 80 the original would not
+    /// read. The places are lines of that written deck.
     pub fn diagnose(&self) -> Vec<crate::error::Diagnostic> {
-        Case::from_raw(&self.to_raw(), "case").1
+        let text = crate::deck::writer::write_case(&self.to_raw());
+        crate::read_deck(&text, "case").diagnostics
     }
 }

@@ -29,7 +29,7 @@ pub enum BodyError {
     #[error("{0} has fewer values than X")]
     Short(&'static str),
     /// A value a deck's checks refuse, met in a case built in code.
-    #[error("{what}({index}) = {value}: must be a number{rule}")]
+    #[error("{what}({index}) = {value} (SI): must be finite{rule}")]
     Invalid {
         what: &'static str,
         index: usize,
@@ -43,9 +43,9 @@ pub enum BodyError {
 fn check_values(b: &Body) -> Result<(), BodyError> {
     let arrays: [(&'static str, &[f64], &'static str); 6] = [
         ("X", &b.x, ""),
-        ("R", &b.r, ", not negative"),
-        ("S", &b.s, ", not negative"),
-        ("P", &b.p, ", not negative"),
+        ("R", &b.r, " and not negative"),
+        ("S", &b.s, " and not negative"),
+        ("P", &b.p, " and not negative"),
         ("ZU", &b.zu, ""),
         ("ZL", &b.zl, ""),
     ];

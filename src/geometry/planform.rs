@@ -36,7 +36,7 @@ pub enum GeometryError {
     ExposedInsideBreak { sspne: f64, sspnop: f64 },
     /// A value the deck's checks refuse, met in a case built in code (a deck with it has an
     /// error already).
-    #[error("{what} = {value}: {rule}")]
+    #[error("{what} = {value} (SI: m, deg): {rule}")]
     Invalid {
         what: &'static str,
         value: f64,
@@ -60,7 +60,7 @@ fn check_values(p: &Planform, sspn: f64) -> Result<(), GeometryError> {
     ] {
         match value {
             Some(v) if v < 0.0 || !v.is_finite() => {
-                return invalid(what, v, "must be a number, not negative");
+                return invalid(what, v, "must be finite and not negative");
             }
             _ => {}
         }
