@@ -322,6 +322,11 @@ proptest! {
         let deck = datcom::read_deck(&text, "mutated.dcm");
         let results = datcom::run(&deck);
         assert_finite(&results);
+        // Each case written back as a deck and checked (the library's path for a case built
+        // in code) whatever the reader kept of it.
+        for case in &deck.cases {
+            let _ = case.diagnose();
+        }
         let _ = datcom::report::text::to_string(&results);
         let _ = datcom::report::json::to_string(&results);
         let _ = datcom::report::csv::to_string(&results);
