@@ -666,3 +666,32 @@ fn twist_term_read_as_the_original_by_hand() {
     }
     assert!((linear(0.341688156, 7.9396224) - original).abs() > 3e-3);
 }
+
+/// A wing near DATCOM's boundary between its high- and low-aspect-ratio methods is told so
+/// (a sweep across it sees a step in CLmax and the moment); one far from it is not.
+#[test]
+fn a_wing_near_the_aspect_ratio_boundary_is_told() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let text = std::fs::read_to_string(path).expect("the bundled deck");
+    let near = |text: &str| {
+        let deck = datcom::read_deck(text, "uav.dcm");
+        datcom::results::run_case(&deck.cases[0])
+            .warnings
+            .iter()
+            .any(|w| w.contains("near DATCOM's boundary"))
+    };
+    assert!(!near(&text), "A = 6.3 is far from the boundary");
+    // With the chords kept, A = (2·SSPN)²/(SSPN·(0.44 + 0.32)) = 2.63·SSPN: from 0.53 to 3.2
+    // over semi-spans of 0.2 to 1.2 m, across the boundary ARCL/((C1 + 1) cos Λ_LE).
+    let found = (20..=120).any(|k| {
+        let sspn = f64::from(k) / 100.0;
+        near(&text.replace(
+            "SSPN=1.20, SSPNE=1.13",
+            &format!("SSPN={sspn}, SSPNE={}", sspn - 0.07),
+        ))
+    });
+    assert!(
+        found,
+        "no semi-span from 0.2 to 1.2 m puts the wing near the boundary"
+    );
+}

@@ -342,8 +342,8 @@ pub fn configuration(
     }
     let wb = straight_wing_body(case, condition_index, alpha_deg)?;
     // Of the wing-body's warnings, those the configuration's numbers carry without a page of
-    // their own: experimental data used, and the body's where its numbers are ours because
-    // the original's are undefined.
+    // their own: experimental data used, the body's where its numbers are ours because the
+    // original's are undefined, and a wing beside the aspect-ratio boundary.
     let mut warnings: Vec<TailWarning> = wb
         .warnings
         .iter()
@@ -356,6 +356,7 @@ pub fn configuration(
                             | BodyWarning::AreaStep { .. }
                             | BodyWarning::ConstantAreaToX0 { .. }
                     )
+                    | WingBodyWarning::Wing(WingWarning::NearAspectRatioBoundary { .. })
             )
         })
         .cloned()

@@ -109,6 +109,11 @@ pub struct AspectRatioClass {
     pub low_aspect_ratio: bool,
 }
 
+/// How near DATCOM's aspect-ratio boundary (relative) a wing gets a warning that its methods
+/// switch there: a design sweep that crosses it sees a step (CMA by 11 % over 5 mm of span on a
+/// light aircraft's wing), the handbook's, not the sweep's.
+pub const ASPECT_RATIO_BOUNDARY_BAND: f64 = 0.02;
+
 /// DATCOM 4.1.3.4: the aspect-ratio class of the planform (the original's ARCLSS and WTLIFT):
 /// low aspect ratio when A < ARCL/((C1 + 1) cos Λ_LE), C1 and C2 from figure 4.1.3.4-24b.
 pub fn aspect_ratio_class(
@@ -119,6 +124,13 @@ pub fn aspect_ratio_class(
     let c1 = figures::read(TAPER_FACTOR_C1, &[planform.taper], warnings)?;
     let c2 = figures::read(TAPER_FACTOR_C2, &[planform.taper], warnings)?;
     let c1_cos_le = (c1 + 1.0) * planform.leading_edge.cos;
+    let boundary = arcl / c1_cos_le;
+    if (planform.aspect_ratio - boundary).abs() <= ASPECT_RATIO_BOUNDARY_BAND * boundary.abs() {
+        warnings.push(WingWarning::NearAspectRatioBoundary {
+            aspect_ratio: planform.aspect_ratio,
+            boundary,
+        });
+    }
     Ok(AspectRatioClass {
         c1,
         c2,

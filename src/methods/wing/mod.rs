@@ -191,6 +191,10 @@ pub enum WingWarning {
     NoDrag { reason: String },
     /// The wing section's own warnings.
     Section { message: String },
+    /// The aspect ratio lies within [`lift::ASPECT_RATIO_BOUNDARY_BAND`] of DATCOM's boundary
+    /// between its high- and low-aspect-ratio methods: maximum lift, the lift beyond the
+    /// linear range and the pitching moment change in a step across it.
+    NearAspectRatioBoundary { aspect_ratio: f64, boundary: f64 },
 }
 
 impl fmt::Display for WingWarning {
@@ -204,6 +208,13 @@ impl fmt::Display for WingWarning {
             WingWarning::NoSectionMaxLift => write!(
                 f,
                 "no section CLMAX for this Mach number: no wing CLmax, and no CL, CD, CM beyond the lift-curve slope"
+            ),
+            WingWarning::NearAspectRatioBoundary {
+                aspect_ratio,
+                boundary,
+            } => write!(
+                f,
+                "the aspect ratio {aspect_ratio:.4} lies near DATCOM's boundary between its high- and low-aspect-ratio methods, ARCL/((C1 + 1) cos LE sweep) = {boundary:.4} (4.1.3.4): maximum lift, the lift beyond the linear range and the pitching moment change in a step across it"
             ),
             WingWarning::NoCamberMachCorrection => write!(
                 f,
