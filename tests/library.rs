@@ -291,6 +291,24 @@ fn edits_are_what_the_deck_is_written_with() {
     assert_eq!(again.scale, 2.0);
     assert_eq!(again.wing.as_ref().and_then(|w| w.sspn), span);
 
+    // At other scales, read back to the conversion's rounding (no deck value gives some SI
+    // values exactly: 2.19456 m at SCALE 0.1 in feet reads back as 2.1945599999999996).
+    for scale in [0.1, 1.7, 7.0] {
+        let mut scaled = deck.cases[0].clone();
+        scaled.scale = scale;
+        let (again, _) = datcom::Case::from_raw(&scaled.to_raw(), "again");
+        let json = |c: &datcom::Case| serde_json::to_value(&c.wing).expect("serializes");
+        if let Err(e) = same(&json(&scaled), &json(&again), "wing") {
+            panic!("scale {scale}: {e}");
+        }
+    }
+    // SCALE lives in $SYNTHS: a scaled case without one still reads back at its scale.
+    let mut bare = build_case::example_uav();
+    bare.synthesis = None;
+    bare.scale = 2.0;
+    let (again, _) = datcom::Case::from_raw(&bare.to_raw(), "again");
+    assert_eq!((again.scale, again.wing), (2.0, bare.wing));
+
     let text = datcom::deck::writer::write_case(&deck.cases[0].to_raw());
     let long = text
         .split([',', '=', '\n', ' '])

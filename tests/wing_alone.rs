@@ -681,17 +681,20 @@ fn a_wing_near_the_aspect_ratio_boundary_is_told() {
             .any(|w| w.contains("near DATCOM's boundary"))
     };
     assert!(!near(&text), "A = 6.3 is far from the boundary");
-    // With the chords kept, A = (2·SSPN)²/(SSPN·(0.44 + 0.32)) = 2.63·SSPN: from 0.53 to 3.2
-    // over semi-spans of 0.2 to 1.2 m, across the boundary ARCL/((C1 + 1) cos Λ_LE).
-    let found = (20..=120).any(|k| {
-        let sspn = f64::from(k) / 100.0;
-        near(&text.replace(
-            "SSPN=1.20, SSPNE=1.13",
-            &format!("SSPN={sspn}, SSPNE={}", sspn - 0.07),
-        ))
-    });
+    // With the chords kept, A = (2·SSPN)²/(SSPN·(0.44 + 0.32)) = 5.26·SSPN: from 1.05 to 6.3
+    // over semi-spans of 0.2 to 1.2 m, across the boundary ARCL/((C1 + 1) cos Λ_LE); the 2 %
+    // band around it is a few hundredths of A wide, so few of the 101 spans fall in it.
+    let found = (20..=120)
+        .filter(|&k| {
+            let sspn = f64::from(k) / 100.0;
+            near(&text.replace(
+                "SSPN=1.20, SSPNE=1.13",
+                &format!("SSPN={sspn}, SSPNE={}", sspn - 0.07),
+            ))
+        })
+        .count();
     assert!(
-        found,
-        "no semi-span from 0.2 to 1.2 m puts the wing near the boundary"
+        (1..=4).contains(&found),
+        "{found} of 101 semi-spans from 0.2 to 1.2 m put the wing near the boundary"
     );
 }

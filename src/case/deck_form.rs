@@ -9,6 +9,19 @@ use crate::deck::cards::{DerivUnit, Dim};
 use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, Value};
 
+/// How many floats on each side of the nearest deck value are tried.
+const NEIGHBOURS: u64 = 4;
+
+/// The floats next to `x`, nearest first (none for 0 or a value that is not finite).
+fn neighbours(x: f64) -> impl Iterator<Item = f64> {
+    let bits = x.to_bits();
+    let finite = x.is_finite() && x != 0.0;
+    (1..=NEIGHBOURS)
+        .filter(move |_| finite)
+        .flat_map(move |k| [f64::from_bits(bits + k), f64::from_bits(bits - k)])
+        .filter(|v| v.is_finite())
+}
+
 /// The most significant digits a written value is tried with (an f64 needs 17).
 const SIGNIFICANT_DIGITS: usize = 17;
 
@@ -23,8 +36,8 @@ struct Namelists<'a> {
 impl Namelists<'_> {
     /// `si` in the deck's units of `nl`'s `var`: the inverse of reading it (the unit of the
     /// case's DIM, and SCALE for the geometry the schema marks as scaled), as the shortest
-    /// decimal that reads back to `si` exactly (184.0, not 184.00000000000003), else the
-    /// nearest value.
+    /// decimal that reads back to `si` exactly (184.0, not 184.00000000000003), else a value
+    /// next to the nearest that does, else the nearest.
     fn deck_units(&self, nl: &str, var: &str, si: f64) -> f64 {
         let Some(spec) = schema::table(nl).and_then(|t| t.var(var)) else {
             return si;
@@ -37,8 +50,10 @@ impl Namelists<'_> {
         let (dim, dimension) = (self.case.dim, spec.dimension);
         let deck = units::from_si(si / scale, dim, dimension);
         let read = |d: f64| units::to_si(d, dim, dimension) * scale;
+        // The shortest decimal, else a neighbour of the nearest value, that reads back exactly.
         (1..=SIGNIFICANT_DIGITS)
             .filter_map(|digits| format!("{deck:.*e}", digits - 1).parse::<f64>().ok())
+            .chain(neighbours(deck))
             .find(|&d| read(d) == si)
             .unwrap_or(deck)
     }
@@ -140,10 +155,14 @@ impl Namelists<'_> {
     }
 
     fn synthesis(&mut self) {
+        const NL: &str = "SYNTHS";
         let Some(s) = &self.case.synthesis else {
+            // SCALE lives in $SYNTHS: a scaled case without one gets one for it.
+            if self.scale != 1.0 {
+                self.put_plain(NL, "SCALE", Some(self.scale));
+            }
             return;
         };
-        const NL: &str = "SYNTHS";
         self.present(NL);
         for (var, v) in [
             ("XCG", s.xcg),

@@ -123,6 +123,9 @@ pub enum TailWarning {
     Chart(ChartWarning),
     /// Warnings of the wing methods (on the wing, the tail or a fin).
     Wing(WingWarning),
+    /// Warnings of the wing methods on the horizontal tail, in a configuration's warnings
+    /// (labelled: they would read as the wing's).
+    HorizontalTail(WingWarning),
     /// Warnings of the wing-body methods.
     WingBody(WingBodyWarning),
     /// A fin has no section thickness ratio: no zero-lift drag, no CD with it.
@@ -138,6 +141,7 @@ impl fmt::Display for TailWarning {
         match self {
             TailWarning::Chart(w) => write!(f, "{w}"),
             TailWarning::Wing(w) => write!(f, "{w}"),
+            TailWarning::HorizontalTail(w) => write!(f, "horizontal tail: {w}"),
             TailWarning::WingBody(w) => write!(f, "{w}"),
             TailWarning::NoFinDrag { surface } => write!(
                 f,
@@ -404,7 +408,13 @@ pub fn configuration(
     let mut canard_terms = None;
     if case.horizontal_tail.is_some() {
         let tail = horizontal_tail_alone(case, condition_index, alpha_deg)?;
-        warnings.extend(tail.surface.warnings.iter().cloned().map(TailWarning::Wing));
+        warnings.extend(
+            tail.surface
+                .warnings
+                .iter()
+                .cloned()
+                .map(TailWarning::HorizontalTail),
+        );
         let method = downwash_method(
             case.sections
                 .get("WING")
