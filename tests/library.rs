@@ -214,6 +214,19 @@ fn every_case_written_as_a_deck_reads_back_the_same() {
             if let Err(e) = same(&a, &b, "case") {
                 panic!("{} case {}: {e}", path.display(), case.number);
             }
+            // Its written deck is as clean as the deck it came from.
+            let errors: Vec<String> = case
+                .diagnose()
+                .iter()
+                .filter(|d| d.is_error())
+                .map(ToString::to_string)
+                .collect();
+            assert!(
+                errors.is_empty(),
+                "{} case {}: {errors:?}",
+                path.display(),
+                case.number
+            );
             cases += 1;
         }
     }
