@@ -398,8 +398,42 @@ impl Case {
     /// values would be told: errors where the methods refuse part of it, a value that is not a
     /// number, more values than an array holds, text beyond column 80 the original would not
     /// read. The places are lines of that written deck.
+    ///
+    /// A value that is not a number cannot be written: each is an error naming its namelist,
+    /// variable and element (line 0), and the deck is read without it.
     pub fn diagnose(&self) -> Vec<crate::error::Diagnostic> {
-        let text = crate::deck::writer::write_case(&self.to_raw());
-        crate::read_deck(&text, "case").diagnostics
+        use crate::error::{DeckProblem, Diagnostic, Severity};
+        let mut raw = self.to_raw();
+        let mut found = Vec::new();
+        for (nl, values) in &mut raw.namelists {
+            for (var, value) in values.iter_mut() {
+                let Value::Numbers(v) = value else { continue };
+                let scalar = v.len() == 1;
+                for (i, x) in v.iter_mut().enumerate() {
+                    if let Some(bad) = x.filter(|x| !x.is_finite()) {
+                        *x = None;
+                        found.push(Diagnostic {
+                            severity: Severity::Error,
+                            file: "case".into(),
+                            line: 0,
+                            column: 0,
+                            card: Some(nl.clone()),
+                            variable: Some(var.clone()),
+                            problem: DeckProblem::Physical {
+                                message: if scalar {
+                                    format!("{var} = {bad}: not a number")
+                                } else {
+                                    format!("{var}({}) = {bad}: not a number", i + 1)
+                                },
+                            },
+                            hint: None,
+                        });
+                    }
+                }
+            }
+        }
+        let text = crate::deck::writer::write_case(&raw);
+        found.extend(crate::read_deck(&text, "case").diagnostics);
+        found
     }
 }
