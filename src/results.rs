@@ -980,20 +980,8 @@ pub fn configuration_name(case: &Case) -> String {
 /// Reference dimensions: $OPTINS, else the wing's theoretical area, mean aerodynamic chord and
 /// span; $LARWB's SREF, L and XCG replace them when given (as in the original).
 fn reference(case: &Case) -> ReferenceDimensions {
-    let dimensions = reference_as_given(case);
-    // A value that is not a number (a case built in code can hold one) is none.
-    let finite = |v: Option<f64>| v.filter(|x| x.is_finite());
-    ReferenceDimensions {
-        area: finite(dimensions.area),
-        chord: finite(dimensions.chord),
-        span: finite(dimensions.span),
-        xcg: finite(Some(dimensions.xcg)).unwrap_or(0.0),
-        zcg: finite(Some(dimensions.zcg)).unwrap_or(0.0),
-    }
-}
-
-fn reference_as_given(case: &Case) -> ReferenceDimensions {
-    // Not a number is not given (the wing's area and chord are used, as without SREF, CBARR).
+    // A value that is not a number (a case built in code can hold one) is not given: the
+    // wing's area and chord are used, as without SREF and CBARR.
     let given = |v: Option<f64>| v.filter(|x| x.is_finite());
     // A planform too large for f64 gives no reference (and `run_case` says so).
     let from_wing = case
@@ -1002,22 +990,23 @@ fn reference_as_given(case: &Case) -> ReferenceDimensions {
         .and_then(planform_area_and_mac)
         .filter(|(area, chord)| area.is_finite() && chord.is_finite());
     let synth = case.synthesis.as_ref();
+    let zcg = given(synth.and_then(|s| s.zcg)).unwrap_or(0.0);
     if let Some(lb) = &case.larwb {
         return ReferenceDimensions {
-            area: lb.sref,
-            chord: lb.length,
-            span: case.reference.span,
-            xcg: lb.xcg.unwrap_or(0.0),
-            zcg: synth.and_then(|s| s.zcg).unwrap_or(0.0),
+            area: given(lb.sref),
+            chord: given(lb.length),
+            span: given(case.reference.span),
+            xcg: given(lb.xcg).unwrap_or(0.0),
+            zcg,
         };
     }
     ReferenceDimensions {
         area: given(case.reference.area).or(from_wing.map(|w| w.0)),
         chord: given(case.reference.chord).or(from_wing.map(|w| w.1)),
         span: given(case.reference.span)
-            .or_else(|| case.wing.as_ref().and_then(|w| w.sspn).map(|s| 2.0 * s)),
-        xcg: synth.and_then(|s| s.xcg).unwrap_or(0.0),
-        zcg: synth.and_then(|s| s.zcg).unwrap_or(0.0),
+            .or_else(|| given(case.wing.as_ref().and_then(|w| w.sspn).map(|s| 2.0 * s))),
+        xcg: given(synth.and_then(|s| s.xcg)).unwrap_or(0.0),
+        zcg,
     }
 }
 

@@ -19,6 +19,7 @@ use crate::deck::cards::{AirfoilCard, Cards, DerivUnit, Dim, Surface};
 use crate::deck::schema::{self, Dimension};
 use crate::deck::{NamelistValues, RawCase, RawDeck, Value};
 use crate::error::{DeckProblem, Diagnostic, Severity};
+use crate::geometry::planform::{EXPOSED_SPAN_TOLERANCE, RIGHT_ANGLE_DEG};
 use crate::geometry::section::SectionError;
 pub use crate::methods::section::MaximumReading;
 pub use crate::methods::wing::ZeroLiftReading;
@@ -946,8 +947,6 @@ impl<'a> Checks<'a> {
 const ATMOSPHERE_RANGE_M: (f64, f64) = (-5000.0, 700_000.0);
 /// Mach numbers beyond which no DATCOM method (hypersonic ones included) applies.
 const MACH_RANGE: (f64, f64) = (0.0, 100.0);
-/// The angle at which the methods' cosines vanish, deg.
-const RIGHT_ANGLE_DEG: f64 = 90.0;
 /// The largest angle of attack in magnitude, deg.
 const HALF_TURN_DEG: f64 = 180.0;
 /// A station or length along the chord as a fraction of it, from the leading to the trailing
@@ -1534,7 +1533,7 @@ impl Case {
                 );
             }
             if let (Some(e), Some(s)) = (p.sspne, p.sspn) {
-                if e > s * (1.0 + 1e-9) {
+                if e > s * (1.0 + EXPOSED_SPAN_TOLERANCE) {
                     c.push(
                         Severity::Error,
                         name,

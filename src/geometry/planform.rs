@@ -44,9 +44,12 @@ pub enum GeometryError {
     },
 }
 
-/// The angles (deg) the methods divide by the cosine of: they must lie strictly between −90°
-/// and 90°.
-const RIGHT_ANGLE_DEG: f64 = 90.0;
+/// The angles (deg) the methods divide by the cosine of (sweeps, dihedrals, incidences) must lie
+/// strictly between −90° and 90° (the deck's checks use it too).
+pub(crate) const RIGHT_ANGLE_DEG: f64 = 90.0;
+
+/// How far (relative) SSPNE may exceed SSPN: the decimals of a deck that gives them equal.
+pub(crate) const EXPOSED_SPAN_TOLERANCE: f64 = 1e-9;
 
 /// What a case built in code can hold and a deck's checks refuse: a negative tip chord, an
 /// exposed semi-span beyond the semi-span, a sweep or dihedral of 90° or more, a value that is
@@ -65,7 +68,10 @@ fn check_values(p: &Planform, sspn: f64) -> Result<(), GeometryError> {
             _ => {}
         }
     }
-    if let Some(e) = p.sspne.filter(|e| *e > sspn * (1.0 + 1e-9)) {
+    if let Some(e) = p
+        .sspne
+        .filter(|e| *e > sspn * (1.0 + EXPOSED_SPAN_TOLERANCE))
+    {
         return invalid(
             "SSPNE",
             e,
@@ -80,7 +86,7 @@ fn check_values(p: &Planform, sspn: f64) -> Result<(), GeometryError> {
     ] {
         match value {
             Some(v) if v.is_nan() || v.abs() >= RIGHT_ANGLE_DEG => {
-                return invalid(what, v, "must lie between -90 and 90 deg");
+                return invalid(what, v, "must lie strictly between -90 and 90 deg");
             }
             _ => {}
         }

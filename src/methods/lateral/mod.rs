@@ -95,9 +95,9 @@ pub enum LateralWarning {
     /// The exposed semispan equals the semispan (no body width at the wing root): the wing
     /// height factor of the wing-body CYβ is undefined, no wing-body CYβ.
     NoBodyWidthAtWing,
-    /// The wing's (or the tail's in its place) height over the body's half width there, z/(d/2), lies outside
-    /// figure 5.2.1.1-7's range (−1 to 1, a wing that meets the body): the wing-height factor
-    /// of the wing-body CYβ is extrapolated linearly, as in the original.
+    /// The wing's (or the tail's in its place) height over the body's half width there,
+    /// z/(d/2), lies outside figure 5.2.1.1-7's range (−1 to 1, a surface that meets the body):
+    /// the height factor of the wing-body CYβ is extrapolated linearly, as in the original.
     WingHeightOutside { ratio: f64, factor: f64 },
     /// The vertical panel's exposed span is not below its span (no body depth at the panel): the
     /// charts of b_v/2r₁ are held at their last nodes (the isolated panel).
