@@ -391,7 +391,6 @@ fn planform_properties(
         Surface::VerticalTail | Surface::VentralFin => {
             crate::methods::tail::fin_zero_lift_drag(case, index, surface, &mut Vec::new())
                 .ok()
-                .flatten()
                 .map(|f| f.drag)
         }
     };

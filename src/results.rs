@@ -494,7 +494,8 @@ pub const WING_BODY_VT_HT: &str = "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFI
 
 /// The vertical tail's sideslip derivatives (DATCOM 5.3.1.1), with the twin vertical panels'
 /// ($TVTPAN, figures 5.3.1.1-24a to -24c) added as the original adds them, up to STMACH; above
-/// it the panels are left out and a warning says so, as the original notes.
+/// it the panels are left out and a warning says so, as the original notes. Twin panels
+/// without a vertical tail are the panels' terms alone (zero above STMACH).
 fn vertical_tail_sideslip(
     case: &Case,
     condition_index: usize,
@@ -502,7 +503,12 @@ fn vertical_tail_sideslip(
     warnings: &mut Vec<String>,
 ) -> Result<crate::methods::lateral::Lateral, crate::methods::lateral::LateralError> {
     use crate::methods::lateral::{self, fin_lateral, Fin};
-    let fin = fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail)?;
+    let with_fin = case.vertical_tail.is_some() || case.twin_panels.is_none();
+    let fin = if with_fin {
+        fin_lateral(case, condition_index, alpha_deg, Fin::VerticalTail)?
+    } else {
+        lateral::Lateral::zero(alpha_deg)
+    };
     if case.twin_panels.is_none() {
         return Ok(fin);
     }
@@ -516,6 +522,9 @@ fn vertical_tail_sideslip(
         return Ok(fin);
     }
     let twin = lateral::twin_panel_lateral(case, alpha_deg)?;
+    if !with_fin {
+        return Ok(twin);
+    }
     let mut total = lateral::sum(&[&fin, &twin]);
     total.fin_terms = fin.fin_terms;
     total.twin_panel_terms = twin.twin_panel_terms;
@@ -542,7 +551,12 @@ fn tail_configuration_coefficients(
     let c = match part {
         WING_BODY_HT => t.wing_body_horizontal_tail.as_ref(),
         WING_BODY_VT => t.wing_body_vertical_tail.as_ref(),
-        _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
+        // Twin panels without a vertical tail or ventral fin add no drag here (the original
+        // prints the wing-body-horizontal tail's longitudinal numbers), only sideslip terms.
+        _ => t
+            .wing_body_vertical_tail_horizontal_tail
+            .as_ref()
+            .or(t.wing_body_horizontal_tail.as_ref()),
     }
     .ok_or_else(|| format!("{part}: not computed"))?;
     let mut warnings: Vec<String> = t.warnings.iter().map(|w| labelled("tails", w)).collect();
@@ -569,7 +583,7 @@ fn tail_configuration_coefficients(
         }
     }
     if with_fins {
-        if case.vertical_tail.is_some() {
+        if case.vertical_tail.is_some() || case.twin_panels.is_some() {
             parts.push(vertical_tail_sideslip(
                 case,
                 condition_index,
@@ -577,7 +591,12 @@ fn tail_configuration_coefficients(
                 &mut warnings,
             ));
         }
-        if case.ventral_fin.is_some() {
+        if lateral::ventral_fin_left_out(case) {
+            warnings.push(labelled(
+                "configuration with tails, sideslip",
+                &lateral::LateralWarning::VentralFinLeftOut,
+            ));
+        } else if case.ventral_fin.is_some() {
             parts.push(lateral::fin_lateral(
                 case,
                 condition_index,
@@ -672,13 +691,13 @@ fn horizontal_tail_coefficients(
 }
 
 /// The vertical tail's zero-lift drag (DATCOM 4.1.5.1) on the case's reference area, its
-/// warnings labelled; none (with a warning) when its section gives no thickness.
+/// warnings labelled.
 fn vertical_tail_drag(
     case: &Case,
     condition_index: usize,
     label: &str,
     warnings: &mut Vec<String>,
-) -> Result<Option<f64>, String> {
+) -> Result<f64, String> {
     let mut tail_warnings = Vec::new();
     let drag = crate::methods::tail::fin_zero_lift_drag(
         case,
@@ -688,7 +707,7 @@ fn vertical_tail_drag(
     )
     .map_err(|e| format!("{label}: {e}"))?;
     warnings.extend(tail_warnings.iter().map(|w| labelled(label, w)));
-    Ok(drag.map(|d| d.drag.total))
+    Ok(drag.drag.total)
 }
 
 /// The vertical tail alone at one condition: its zero-lift drag (DATCOM 4.1.5.1) on the first
@@ -704,7 +723,7 @@ fn vertical_tail_coefficients(
     let n = alpha_deg.len();
     let mut s = StaticCoefficients::empty(n);
     if n > 0 {
-        s.cd[0] = drag;
+        s.cd[0] = Some(drag);
         for column in [&mut s.cl, &mut s.cm, &mut s.cn, &mut s.cla, &mut s.cma] {
             column[0] = Some(0.0);
         }
@@ -727,7 +746,7 @@ fn body_vertical_tail_coefficients(
     use crate::methods::lateral;
     let (body, mut warnings) = body_alone_coefficients(case, condition, alpha_deg)?;
     let drag = vertical_tail_drag(case, condition_index, "body-vertical tail", &mut warnings)?;
-    let cd: Vec<Option<f64>> = body.cd.iter().map(|c| Some((*c)? + drag?)).collect();
+    let cd: Vec<Option<f64>> = body.cd.iter().map(|c| c.map(|c| c + drag)).collect();
     let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
         alpha_deg,
         cd,
@@ -1114,11 +1133,18 @@ fn compute_case(case: &Case) -> CaseResults {
         // TAIL-VERTICAL TAIL-VENTRAL FIN page) takes the place of WING_BODY_VT_HT: the same
         // totals with the fin's drag and sideslip terms.
         let vf = case.ventral_fin.is_some();
-        let full = if vf {
+        let twin = case.twin_panels.is_some();
+        // Twin vertical panels without a vertical tail: the full configuration is named
+        // without it (WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL).
+        let full = if vf || (twin && !vt) {
             configuration.as_str()
         } else {
             WING_BODY_VT_HT
         };
+        // A ventral fin without a horizontal tail (a finned rocket, WING-BODY-VERTICAL
+        // TAIL-VENTRAL FIN): the full configuration is the wing-body with its fins, computed
+        // as the wing-body-vertical tail page is (the fins' drag and sideslip terms).
+        let fins_only = vf && !ht;
         // In the original's page order.
         let body = case.body.is_some();
         let parts: [(&str, bool); 11] = [
@@ -1132,19 +1158,25 @@ fn compute_case(case: &Case) -> CaseResults {
             (BODY_VT, body && vt),
             (WING_BODY_HT, wb && ht),
             (WING_BODY_VT, wb && vt),
-            (full, wb && ht && (vt || vf)),
+            (full, wb && (ht || fins_only) && (vt || vf || twin)),
         ];
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;
             // The configurations with tails come from one computation per condition.
             let mut totals: Option<Result<crate::methods::tail::ConfigurationTotals, String>> =
                 None;
-            for (part, present) in parts {
-                let name = page_name(case, part);
+            for (page, present) in parts {
+                let name = page_name(case, page);
                 let own = configuration == name;
                 if !present || !(own || case.cards.build) {
                     continue;
                 }
+                // The method that gives the page.
+                let part = if fins_only && page == full {
+                    WING_BODY_VT
+                } else {
+                    page
+                };
                 let computed = match part {
                     LOW_ASPECT_RATIO => low_aspect_ratio_coefficients(case, &c, &f.alpha_deg),
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
@@ -1228,6 +1260,12 @@ fn compute_case(case: &Case) -> CaseResults {
                 conditions.push(entry);
             }
             if !own_computed {
+                // Said once per case (the same for every condition).
+                if index == 0 && configuration != "NO COMPONENT" {
+                    warnings.push(format!(
+                        "{configuration}: no method for this combination of components here: nothing computed"
+                    ));
+                }
                 conditions.push(ConditionResults {
                     condition: c,
                     configuration: configuration.clone(),

@@ -387,3 +387,131 @@ fn a_fin_without_body_depth_warns_once_without_quoting_the_largest_float() {
         "{warnings:#?}"
     );
 }
+
+/// A finned rocket: wing, vertical tail and ventral fin, no horizontal tail (a corpus deck of
+/// this kind, OpenPost's, had no numbers at all). Its page was never computed, its empty page
+/// said "the warnings say why" with no warning, the ventral fin's sideslip terms failed for
+/// want of a horizontal tail, and a fin without a section had no drag. Reference: what a build
+/// of the original's public source (gfortran, outside this repository) prints for this deck.
+#[test]
+fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
+    /// The issue's agreement rule: 2 % or one unit in the last printed digit.
+    const RELATIVE: f64 = 0.02;
+    let deck = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=5.0, ALSCHD(1)=0.0,2.0,4.0,6.0,8.0$\n \
+         $OPTINS SREF=0.8, CBARR=10.0, BLREF=1.2$\n \
+         $SYNTHS XCG=6.0, ZCG=0.0, XW=9.0, ZW=0.0, ALIW=0.0, XV=9.0, ZV=0.0,\n   \
+         XVF=9.5, ZVF=-0.5, VERTUP=.TRUE.$\n \
+         $BODY NX=3.0, X(1)=0.0,2.0,12.0, R(1)=0.0,0.5,0.5$\n\
+         NACA-W-4-0008\n \
+         $WGPLNF CHRDR=1.8, CHRDTP=0.9, SSPN=1.6, SSPNE=1.1, SAVSI=40.0, TYPE=1.0$\n\
+         NACA-V-4-0008\n \
+         $VTPLNF CHRDR=1.8, CHRDTP=0.9, SSPN=1.6, SSPNE=1.1, SAVSI=40.0, TYPE=1.0$\n \
+         $VFPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=0.7, SAVSI=30.0, TYPE=1.0$\nDAMP\n",
+    )
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    let case = &r.cases[0];
+    let page = &case.conditions[0];
+    assert_eq!(
+        page.configuration,
+        "WING-BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION"
+    );
+    let near = |ours: Option<f64>, printed: f64, unit: f64| {
+        let ours = ours.unwrap_or(f64::NAN);
+        assert!(
+            (ours - printed).abs() <= (RELATIVE * printed.abs()).max(unit),
+            "{ours} against the original's {printed}"
+        );
+    };
+    let s = &page.static_coefficients;
+    // CD holds the ventral fin's skin friction (it has no section).
+    for (k, cd) in [0.268, 0.278, 0.309, 0.364, 0.446].into_iter().enumerate() {
+        near(s.cd[k], cd, 0.001);
+    }
+    for (k, cl) in [0.0, 0.543, 1.119, 1.722, 2.337].into_iter().enumerate() {
+        near(s.cl[k], cl, 0.001);
+    }
+    // Per degree in the listing; ours per radian.
+    let per_deg = |v: Option<f64>| v.map(f64::to_radians);
+    near(per_deg(s.cyb[0]), -0.1642, 1e-4);
+    near(per_deg(s.cnb[0]), 0.2314, 1e-4);
+    near(per_deg(s.clb[0]), -0.07793, 1e-5);
+    let d = page.dynamic.as_ref().expect("DAMP gives a dynamic block");
+    near(per_deg(d.cnr[0]), -2.845, 1e-3);
+    near(per_deg(d.clr[0]), 0.5126, 1e-4);
+    for said in [
+        "the ventral fin's sideslip and roll and yaw rate terms are left out",
+        "VENTRAL FIN: no section (NACA card, coordinates or TOVC): its zero-lift drag is skin friction only",
+    ] {
+        assert!(
+            case.warnings.iter().any(|w| w.contains(said)),
+            "{:#?}",
+            case.warnings
+        );
+    }
+}
+
+/// Twin vertical panels on the horizontal tail and no vertical tail (a corpus deck of this
+/// kind, an Ercoupe, had no numbers): the configuration's page was never computed, the panels'
+/// terms failed for want of VPHITE (which the original reads as 0 when not given), and the
+/// panels' figure 5.3.1.1-24c took the body's length from X = 0 instead of from its nose.
+/// Reference: what a build of the original's public source (gfortran, outside this repository)
+/// prints for this deck.
+#[test]
+fn twin_panels_without_a_vertical_tail_are_computed() {
+    /// The issue's agreement rule: 2 % or one unit in the last printed digit.
+    const RELATIVE: f64 = 0.02;
+    let deck = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.15, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=4.0, ALSCHD(1)=-2.0,0.0,2.0,4.0$\n \
+         $OPTINS SREF=12.0, CBARR=1.5, BLREF=8.0$\n \
+         $SYNTHS XCG=0.7, ZCG=0.1, XW=-0.5, ZW=-0.1, ALIW=1.0,\n   XH=3.3, ZH=0.5, ALIH=-1.0$\n \
+         $BODY NX=5.0, X(1)=-1.5,-1.0,0.5,2.0,4.0,\n   R(1)=0.1,0.4,0.6,0.45,0.1$\n\
+         NACA-W-4-2412\n \
+         $WGPLNF CHRDR=1.6, CHRDTP=1.2, SSPN=4.0, SSPNE=3.5, SAVSI=0.0,\n   \
+         CHSTAT=0.25, TYPE=1.0$\n\
+         NACA-H-4-0009\n \
+         $HTPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=1.1, SAVSI=5.0,\n   \
+         CHSTAT=0.25, TYPE=1.0$\n \
+         $TVTPAN BVP=0.5, BV=1.0, BDV=0.3, BH=2.2, SV=0.45, VLP=3.6, ZP=0.5$\n",
+    )
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    let case = &r.cases[0];
+    let page = &case.conditions[0];
+    assert_eq!(
+        page.configuration,
+        "WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL CONFIGURATION"
+    );
+    let near = |ours: Option<f64>, printed: f64, unit: f64| {
+        let ours = ours.unwrap_or(f64::NAN);
+        assert!(
+            (ours - printed).abs() <= (RELATIVE * printed.abs()).max(unit),
+            "{ours} against the original's {printed}"
+        );
+    };
+    let s = &page.static_coefficients;
+    for (k, cl) in [0.019, 0.179, 0.348, 0.523].into_iter().enumerate() {
+        near(s.cl[k], cl, 0.001);
+    }
+    // Per degree in the listing; ours per radian. The panels' share of CYB is about a third:
+    // with the body measured from X = 0, CYB was 4 % larger.
+    let per_deg = |v: Option<f64>| v.map(f64::to_radians);
+    near(per_deg(s.cyb[0]), -4.452e-3, 1e-6);
+    near(per_deg(s.cnb[0]), 7.358e-4, 1e-7);
+    for (k, clb) in [-1.230e-4, -2.454e-4, -3.759e-4, -5.146e-4]
+        .into_iter()
+        .enumerate()
+    {
+        near(per_deg(s.clb[k]), clb, 1e-7);
+    }
+    assert!(
+        case.warnings
+            .iter()
+            .any(|w| w.contains("$TVTPAN gives no VPHITE")),
+        "{:#?}",
+        case.warnings
+    );
+}

@@ -647,12 +647,11 @@ fn totals_are_sums_of_named_terms() {
         }
         if let Some(cd) = wb.cd[k] {
             assert_eq!(wbh.cd[k], Some(cd + t.drag));
-            if let (Some(p), Some(f)) =
-                (&r.wing_body_vertical_tail_horizontal_tail, r.terms.fin_drag)
-            {
+            let f = r.terms.fin_drag;
+            if let Some(p) = &r.wing_body_vertical_tail_horizontal_tail {
                 assert_eq!(p.cd[k], Some(cd + t.drag + f));
             }
-            if let (Some(p), Some(f)) = (&r.wing_body_vertical_tail, r.terms.fin_drag) {
+            if let Some(p) = &r.wing_body_vertical_tail {
                 assert_eq!(p.cd[k], Some(cd + f));
             }
         }
@@ -671,9 +670,7 @@ fn totals_are_sums_of_named_terms() {
     }
     let fins = r.terms.vertical_tail.as_ref().map_or(0.0, |d| d.drag.total)
         + r.terms.ventral_fin.as_ref().map_or(0.0, |d| d.drag.total);
-    if let Some(f) = r.terms.fin_drag {
-        assert_eq!(f, fins);
-    }
+    assert_eq!(r.terms.fin_drag, fins);
     for p in [
         &r.wing_body_horizontal_tail,
         &r.wing_body_vertical_tail,

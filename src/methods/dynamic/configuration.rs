@@ -3,9 +3,9 @@
 
 use serde::Serialize;
 
-use super::{finite, Column, Dynamic, DynamicError};
+use super::{finite, Column, Dynamic, DynamicError, DynamicWarning};
 use crate::case::Case;
-use crate::methods::lateral::{fin_lateral, Fin};
+use crate::methods::lateral::{fin_lateral, ventral_fin_left_out, Fin};
 use crate::methods::tail::{tail_position, ConfigurationTotals};
 use crate::methods::wing::WingType;
 use crate::methods::wing_body::WingBody;
@@ -178,7 +178,11 @@ pub fn wing_body_tail_dynamic(
                 Fin::VerticalTail,
                 "vertical tail",
             ),
-            (case.ventral_fin.is_some(), Fin::VentralFin, "ventral fin"),
+            (
+                case.ventral_fin.is_some() && !ventral_fin_left_out(case),
+                Fin::VentralFin,
+                "ventral fin",
+            ),
         ] {
             if present {
                 parts.push((name, fin_dynamic(case, condition_index, alpha, fin)?));
@@ -190,6 +194,9 @@ pub fn wing_body_tail_dynamic(
         Column::sum(&cols, n)
     };
     let mut total = Dynamic::no_method(alpha);
+    if with_fins && ventral_fin_left_out(case) {
+        total.warnings.push(DynamicWarning::VentralFinLeftOut);
+    }
     total.clq = sum(|d| &d.clq).first_row_only();
     total.cmq = sum(|d| &d.cmq).first_row_only();
     total.clad = sum(|d| &d.clad);

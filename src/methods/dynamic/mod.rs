@@ -82,6 +82,9 @@ pub enum DynamicWarning {
     ForwardSweep,
     /// The body's nose or tail is not of the nose-cylinder type the body method assumes.
     BodyShape,
+    /// A ventral fin without a horizontal tail: its terms are left out
+    /// ([`crate::methods::lateral::ventral_fin_left_out`]).
+    VentralFinLeftOut,
 }
 
 impl fmt::Display for DynamicWarning {
@@ -90,6 +93,9 @@ impl fmt::Display for DynamicWarning {
             DynamicWarning::Chart(w) => write!(f, "{w}"),
             DynamicWarning::NotComputed { derivative, reason } => {
                 write!(f, "{derivative} not computed: {reason}")
+            }
+            DynamicWarning::VentralFinLeftOut => {
+                f.write_str(crate::methods::lateral::VENTRAL_FIN_LEFT_OUT)
             }
             DynamicWarning::NoAlphaDotMethod => write!(
                 f,

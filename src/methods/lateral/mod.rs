@@ -102,6 +102,23 @@ pub enum LateralWarning {
     /// The vertical panel's exposed span is not below its span (no body depth at the panel): the
     /// charts of b_v/2r₁ are held at their last nodes (the isolated panel).
     NoBodyAtFin,
+    /// $TVTPAN without VPHITE: the panels' trailing-edge angle is taken as 0°.
+    NoTrailingEdgeAngle,
+    /// A ventral fin in a case without a horizontal tail: its sideslip terms are left out
+    /// ([`ventral_fin_left_out`]).
+    VentralFinLeftOut,
+}
+
+/// Why a ventral fin's sideslip (and so roll and yaw rate) terms are left out of a
+/// configuration without a horizontal tail.
+pub const VENTRAL_FIN_LEFT_OUT: &str = "the ventral fin's sideslip and roll and yaw rate terms are left out: its sidewash factor comes from the horizontal tail (DATCOM 5.3.1.1 as the original applies it) and the case has none; the original leaves them out too (its drag is counted)";
+
+/// True when the case's ventral fin has no sidewash surface (no horizontal tail): the
+/// original computes the fin's sideslip terms from the horizontal tail's planform and, without
+/// one, leaves them out of the configuration's totals; so does the build-up here, with
+/// [`LateralWarning::VentralFinLeftOut`].
+pub fn ventral_fin_left_out(case: &Case) -> bool {
+    case.ventral_fin.is_some() && case.horizontal_tail.is_none()
 }
 
 impl fmt::Display for LateralWarning {
@@ -119,6 +136,11 @@ impl fmt::Display for LateralWarning {
                 f,
                 "the vertical panel's SSPNE is not below its SSPN (no body depth at the panel): \
                  figures 5.3.1.1-22a and -22d are held at their last nodes"
+            ),
+            LateralWarning::VentralFinLeftOut => f.write_str(VENTRAL_FIN_LEFT_OUT),
+            LateralWarning::NoTrailingEdgeAngle => write!(
+                f,
+                "$TVTPAN gives no VPHITE: the twin panels' trailing-edge angle is taken as 0 deg (figure 5.3.1.1-24b's 0-deg curve), as the original reads it"
             ),
             LateralWarning::NoBodyWidthAtWing => write!(
                 f,
@@ -154,6 +176,25 @@ pub struct Lateral {
     /// The twin vertical panels' named terms.
     pub twin_panel_terms: Option<TwinPanelLateralTerms>,
     pub warnings: Vec<LateralWarning>,
+}
+
+impl Lateral {
+    /// No sideslip derivatives: CYβ, Cnβ 0 on the first row, Clβ 0 at every angle (a
+    /// component that adds nothing, as the original prints zeros for it).
+    pub fn zero(alpha_deg: &[f64]) -> Self {
+        let (cyb, cnb, clb) = vertical_tail::side_force_rows(alpha_deg, 0.0, 0.0, 0.0, 1.0);
+        Lateral {
+            alpha_deg: alpha_deg.to_vec(),
+            cyb,
+            cnb,
+            clb,
+            wing_terms: None,
+            wing_body_terms: None,
+            fin_terms: None,
+            twin_panel_terms: None,
+            warnings: Vec::new(),
+        }
+    }
 }
 
 impl From<WingMethodError> for LateralError {

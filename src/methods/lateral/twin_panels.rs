@@ -9,7 +9,7 @@
 use serde::Serialize;
 
 use super::figures::{self, read};
-use super::{Lateral, LateralError};
+use super::{Lateral, LateralError, LateralWarning};
 use crate::case::Case;
 
 /// The terms of the twin panels' derivatives (lengths in metres).
@@ -45,8 +45,8 @@ pub struct TwinPanelLateralTerms {
 /// - CYβ = −K·CLα_p·2 SV/S, K of figure 5.3.1.1-24c (BH/l_B, BDV/BV), l_B the body length;
 /// - Cnβ = −CYβ·VLP/b; Clβ(α) = CYβ (ZP cos α − VLP sin α)/b.
 ///
-/// Subsonic only (the caller leaves the panels out above Mach 1, as the original). Errors: no
-/// $TVTPAN, a variable of it missing, no body (its length), no reference area or lateral
+/// Subsonic only (the caller leaves the panels out above Mach 1, as the original). VPHITE not
+/// given is 0°, with a warning. Errors: no $TVTPAN, another variable of it missing, no body (its length), no reference area or lateral
 /// reference length, charts.
 pub fn twin_panel_lateral(case: &Case, alpha_deg: &[f64]) -> Result<Lateral, LateralError> {
     let missing = |what: &str| LateralError::Geometry {
@@ -75,17 +75,23 @@ pub fn twin_panel_lateral(case: &Case, alpha_deg: &[f64]) -> Result<Lateral, Lat
         }
     })?;
     let (bvp, bdv, bh) = (need(p.bvp, "BVP")?, need(p.bdv, "BDV")?, need(p.bh, "BH")?);
-    let vphite = need(p.vphite, "VPHITE")?;
+    let mut warnings = Vec::new();
+    // Unset, the original's VPHITE is 0 (its listing equals the one with VPHITE=0.0).
+    let vphite = p.vphite.filter(|v| v.is_finite()).unwrap_or_else(|| {
+        warnings.push(LateralWarning::NoTrailingEdgeAngle);
+        0.0
+    });
     let (arm_x, arm_z) = (need(p.vlp, "VLP")?, p.zp.unwrap_or(0.0));
+    // From the nose: the original measures the body from X(1) (a deck whose nose is not at
+    // 0 gives the same length).
     let body_length = case
         .body
         .as_ref()
-        .and_then(|b| b.x.last().copied())
+        .and_then(|b| Some(b.x.last()? - b.x.first()?))
         .filter(|l| *l > 0.0)
         .ok_or_else(|| missing("the body's length"))?;
     let s_ref = super::reference_area(case).ok_or_else(|| missing("a reference area"))?;
     let b_ref = super::body::lateral_reference_span(case).ok_or(LateralError::NoReferenceSpan)?;
-    let mut warnings = Vec::new();
 
     let span_above_over_span = bvp / bv;
     let position_factor = read(

@@ -128,8 +128,9 @@ pub enum TailWarning {
     HorizontalTail(WingWarning),
     /// Warnings of the wing-body methods.
     WingBody(WingBodyWarning),
-    /// A fin has no section thickness ratio: no zero-lift drag, no CD with it.
-    NoFinDrag { surface: &'static str },
+    /// A fin has no section (no thickness ratio): its zero-lift drag is the skin friction's
+    /// alone (t/c = 0), as the original computes it.
+    FinDragFrictionOnly { surface: &'static str },
     /// The wing has no zero-lift drag: no q/q∞.
     NoWingZeroLiftDrag,
     /// The tail has no pitching moment terms (aerodynamic centre, Cm0): no CM with it.
@@ -143,9 +144,9 @@ impl fmt::Display for TailWarning {
             TailWarning::Wing(w) => write!(f, "{w}"),
             TailWarning::HorizontalTail(w) => write!(f, "horizontal tail: {w}"),
             TailWarning::WingBody(w) => write!(f, "{w}"),
-            TailWarning::NoFinDrag { surface } => write!(
+            TailWarning::FinDragFrictionOnly { surface } => write!(
                 f,
-                "{surface}: no section thickness ratio (TOVC): no zero-lift drag"
+                "{surface}: no section (NACA card, coordinates or TOVC): its zero-lift drag is skin friction only (thickness ratio 0, as in the original)"
             ),
             TailWarning::NoWingZeroLiftDrag => {
                 write!(f, "the wing has no zero-lift drag: no q/q_inf at the tail")
@@ -212,9 +213,8 @@ pub struct ConfigurationTerms {
     pub tail_body: Option<TailBody>,
     pub vertical_tail: Option<FinZeroLiftDrag>,
     pub ventral_fin: Option<FinZeroLiftDrag>,
-    /// Zero-lift drag of the vertical tail and ventral fin together (none when one present
-    /// has none).
-    pub fin_drag: Option<f64>,
+    /// Zero-lift drag of the vertical tail and ventral fin together (0 without either).
+    pub fin_drag: f64,
     /// The first CLA and CMA of the wing-body-horizontal tail, per rad, and their terms (the
     /// later ones are slopes of the CL and CM curves).
     pub first_slopes: Option<FirstSlopes>,
@@ -369,27 +369,16 @@ pub fn configuration(
 
     // Fins.
     let mut fin = |surface: Surface, present: bool| -> Result<Option<FinZeroLiftDrag>, TailError> {
-        if !present {
-            return Ok(None);
-        }
-        fin_zero_lift_drag(case, condition_index, surface, &mut warnings)
+        present
+            .then(|| fin_zero_lift_drag(case, condition_index, surface, &mut warnings))
+            .transpose()
     };
     let vertical_tail = fin(Surface::VerticalTail, case.vertical_tail.is_some())?;
     let ventral_fin = fin(Surface::VentralFin, case.ventral_fin.is_some())?;
-    let fin_drag = match (
-        case.vertical_tail.is_some(),
-        &vertical_tail,
-        case.ventral_fin.is_some(),
-        &ventral_fin,
-    ) {
-        (true, None, _, _) | (_, _, true, None) => None,
-        _ => Some(
-            vertical_tail.as_ref().map_or(0.0, |d| d.drag.total)
-                + ventral_fin.as_ref().map_or(0.0, |d| d.drag.total),
-        ),
-    };
+    let fin_drag = vertical_tail.as_ref().map_or(0.0, |d| d.drag.total)
+        + ventral_fin.as_ref().map_or(0.0, |d| d.drag.total);
     let with_fins = |cd: &[Option<f64>]| -> Vec<Option<f64>> {
-        cd.iter().map(|c| Some((*c)? + fin_drag?)).collect()
+        cd.iter().map(|c| c.map(|c| c + fin_drag)).collect()
     };
     let wing_body_vertical_tail = has_fin.then(|| {
         Coefficients::resolved(

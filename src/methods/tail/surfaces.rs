@@ -225,13 +225,14 @@ pub struct FinZeroLiftDrag {
 /// 4.1.5.1-26 at the Reynolds number on the exposed MAC (at most the cut-off of figure
 /// 4.1.5.1-27) and R_LS of figure 4.1.5.1-28b; reuses the wing's zero-lift drag. Section:
 /// $VTSCHR (or $VFSCHR) TOVC, XOVC, else the computed section. Subsonic. Original: VTDRAG,
-/// VFDRAG. None when the section gives no thickness ratio.
+/// VFDRAG. Without a section thickness ratio (no section at all) the drag is the skin
+/// friction's alone, t/c = 0, with a warning, as the original computes it then.
 pub fn fin_zero_lift_drag(
     case: &Case,
     condition_index: usize,
     surface: Surface,
     warnings: &mut Vec<TailWarning>,
-) -> Result<Option<FinZeroLiftDrag>, TailError> {
+) -> Result<FinZeroLiftDrag, TailError> {
     let plan: &Planform = match surface {
         Surface::VerticalTail => case.vertical_tail.as_ref(),
         Surface::VentralFin => case.ventral_fin.as_ref(),
@@ -256,12 +257,14 @@ pub fn fin_zero_lift_drag(
         Some(Ok(s)) => section_characteristics(&s.shape, &s.conditions, &s.overrides).ok(),
         _ => None,
     };
-    let Some(thickness_ratio) = scalar("TOVC").or(computed.as_ref().map(|c| c.max_thickness))
-    else {
-        warnings.push(TailWarning::NoFinDrag {
-            surface: surface.name(),
-        });
-        return Ok(None);
+    let thickness_ratio = match scalar("TOVC").or(computed.as_ref().map(|c| c.max_thickness)) {
+        Some(t) => t,
+        None => {
+            warnings.push(TailWarning::FinDragFrictionOnly {
+                surface: surface.name(),
+            });
+            0.0
+        }
     };
     let max_thickness_x = scalar("XOVC").or(computed.as_ref().map(|c| c.max_thickness_x));
     let outboard_max_thickness_x = scalar("XOVCO").or(max_thickness_x);
@@ -312,9 +315,9 @@ pub fn fin_zero_lift_drag(
     let mut wing_warnings = Vec::new();
     let drag = wing_zero_lift_drag(&inputs, &mut wing_warnings).map_err(TailError::Wing)?;
     warnings.extend(wing_warnings.into_iter().map(TailWarning::Wing));
-    Ok(Some(FinZeroLiftDrag {
+    Ok(FinZeroLiftDrag {
         surface,
         straight_tapered,
         drag,
-    }))
+    })
 }
