@@ -546,17 +546,12 @@ fn tail_configuration_coefficients(
     totals: &Result<crate::methods::tail::ConfigurationTotals, String>,
     part: &str,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    use crate::methods::lateral::{self, Fin};
+    use crate::methods::lateral;
     let t = totals.as_ref().map_err(Clone::clone)?;
     let c = match part {
         WING_BODY_HT => t.wing_body_horizontal_tail.as_ref(),
         WING_BODY_VT => t.wing_body_vertical_tail.as_ref(),
-        // Twin panels without a vertical tail or ventral fin add no drag here (the original
-        // prints the wing-body-horizontal tail's longitudinal numbers), only sideslip terms.
-        _ => t
-            .wing_body_vertical_tail_horizontal_tail
-            .as_ref()
-            .or(t.wing_body_horizontal_tail.as_ref()),
+        _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
     }
     .ok_or_else(|| format!("{part}: not computed"))?;
     let mut warnings: Vec<String> = t.warnings.iter().map(|w| labelled("tails", w)).collect();
@@ -583,26 +578,15 @@ fn tail_configuration_coefficients(
         }
     }
     if with_fins {
-        if case.vertical_tail.is_some() || case.twin_panels.is_some() {
-            parts.push(vertical_tail_sideslip(
-                case,
-                condition_index,
-                alpha,
-                &mut warnings,
-            ));
-        }
-        if lateral::ventral_fin_left_out(case) {
-            warnings.push(labelled(
-                "configuration with tails, sideslip",
-                &lateral::LateralWarning::VentralFinLeftOut,
-            ));
-        } else if case.ventral_fin.is_some() {
-            parts.push(lateral::fin_lateral(
-                case,
-                condition_index,
-                alpha,
-                Fin::VentralFin,
-            ));
+        match fins_sideslip(
+            case,
+            condition_index,
+            alpha,
+            "configuration with tails, sideslip",
+            &mut warnings,
+        ) {
+            Ok(fins) => parts.extend(fins.into_iter().map(Ok)),
+            Err(e) => parts.push(Err(e)),
         }
     }
     let total = parts
@@ -656,6 +640,7 @@ fn wing_body_coefficients(
 /// The original's configuration lines for the tails alone and with the body alone (BUILD).
 pub const HORIZONTAL_TAIL: &str = "HORIZONTAL TAIL CONFIGURATION";
 pub const VERTICAL_TAIL: &str = "VERTICAL TAIL CONFIGURATION";
+pub const VENTRAL_FIN: &str = "VENTRAL FIN CONFIGURATION";
 pub const BODY_HT: &str = "BODY-HORIZONTAL TAIL CONFIGURATION";
 pub const BODY_VT: &str = "BODY-VERTICAL TAIL CONFIGURATION";
 
@@ -690,19 +675,28 @@ fn horizontal_tail_coefficients(
     Ok((s, warnings))
 }
 
-/// The vertical tail's zero-lift drag (DATCOM 4.1.5.1) on the case's reference area, its
-/// warnings labelled.
-fn vertical_tail_drag(
+/// A fin's zero-lift drag (DATCOM 4.1.5.1) on the case's reference area, its warnings
+/// labelled; 0 for a fin the case does not have.
+fn fin_drag(
     case: &Case,
     condition_index: usize,
+    surface: Surface,
     label: &str,
     warnings: &mut Vec<String>,
 ) -> Result<f64, String> {
+    let present = match surface {
+        Surface::VerticalTail => case.vertical_tail.is_some(),
+        Surface::VentralFin => case.ventral_fin.is_some(),
+        _ => false,
+    };
+    if !present {
+        return Ok(0.0);
+    }
     let mut tail_warnings = Vec::new();
     let drag = crate::methods::tail::fin_zero_lift_drag(
         case,
         condition_index,
-        crate::deck::cards::Surface::VerticalTail,
+        surface,
         &mut tail_warnings,
     )
     .map_err(|e| format!("{label}: {e}"))?;
@@ -710,33 +704,100 @@ fn vertical_tail_drag(
     Ok(drag.drag.total)
 }
 
-/// The vertical tail alone at one condition: its zero-lift drag (DATCOM 4.1.5.1) on the first
-/// row, no lift, moment or slopes (0 on the first row, as the original prints them), and its
-/// sideslip derivatives (DATCOM 5.3.1.1, with the sidewash of its configuration).
-fn vertical_tail_coefficients(
+/// The vertical tail's and ventral fin's zero-lift drag together.
+fn fins_drag(
+    case: &Case,
+    condition_index: usize,
+    label: &str,
+    warnings: &mut Vec<String>,
+) -> Result<f64, String> {
+    Ok(fin_drag(
+        case,
+        condition_index,
+        Surface::VerticalTail,
+        label,
+        warnings,
+    )? + fin_drag(case, condition_index, Surface::VentralFin, label, warnings)?)
+}
+
+/// The sideslip derivatives of the case's fins, one part each for the caller's sum: the
+/// vertical tail with its twin panels ([`vertical_tail_sideslip`]) and the ventral fin (left
+/// out, with a warning, without a horizontal tail: `lateral::ventral_fin_left_out`).
+fn fins_sideslip(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
+    label: &str,
+    warnings: &mut Vec<String>,
+) -> Result<Vec<crate::methods::lateral::Lateral>, crate::methods::lateral::LateralError> {
+    use crate::methods::lateral::{self, Fin, LateralWarning};
+    let mut parts = Vec::new();
+    if case.vertical_tail.is_some() || case.twin_panels.is_some() {
+        parts.push(vertical_tail_sideslip(
+            case,
+            condition_index,
+            alpha_deg,
+            warnings,
+        )?);
+    }
+    if lateral::ventral_fin_left_out(case) {
+        warnings.push(labelled(label, &LateralWarning::VentralFinLeftOut));
+    } else if case.ventral_fin.is_some() {
+        parts.push(lateral::fin_lateral(
+            case,
+            condition_index,
+            alpha_deg,
+            Fin::VentralFin,
+        )?);
+    }
+    Ok(parts)
+}
+
+/// A fin alone at one condition (the vertical tail with its twin panels, or the ventral fin):
+/// its zero-lift drag (DATCOM 4.1.5.1) on the first row, no lift, moment or slopes (0 on the
+/// first row, as the original prints them), and its sideslip derivatives (DATCOM 5.3.1.1, with
+/// the sidewash of its configuration).
+fn fin_alone_coefficients(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    fin: crate::methods::lateral::Fin,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
+    use crate::methods::lateral::{self, Fin, Lateral, LateralWarning};
     let mut warnings = Vec::new();
-    let drag = vertical_tail_drag(case, condition_index, "vertical tail alone", &mut warnings)?;
+    let (surface, label) = match fin {
+        Fin::VerticalTail => (Surface::VerticalTail, "vertical tail alone"),
+        Fin::VentralFin => (Surface::VentralFin, "ventral fin alone"),
+    };
+    let drag = fin_drag(case, condition_index, surface, label, &mut warnings)?;
     let n = alpha_deg.len();
     let mut s = StaticCoefficients::empty(n);
-    if n > 0 {
+    // Twin vertical panels without a vertical tail: no longitudinal numbers, as the original.
+    let panels_only = fin == Fin::VerticalTail && case.vertical_tail.is_none();
+    if n > 0 && !panels_only {
         s.cd[0] = Some(drag);
         for column in [&mut s.cl, &mut s.cm, &mut s.cn, &mut s.cla, &mut s.cma] {
             column[0] = Some(0.0);
         }
     }
-    let lateral = vertical_tail_sideslip(case, condition_index, alpha_deg, &mut warnings)
-        .map_err(|e| e.to_string());
-    add_sideslip(&mut s, &mut warnings, "vertical tail alone", lateral);
+    let lateral = match fin {
+        Fin::VerticalTail => {
+            vertical_tail_sideslip(case, condition_index, alpha_deg, &mut warnings)
+        }
+        Fin::VentralFin if lateral::ventral_fin_left_out(case) => {
+            warnings.push(labelled(label, &LateralWarning::VentralFinLeftOut));
+            Ok(Lateral::zero(alpha_deg))
+        }
+        Fin::VentralFin => lateral::fin_lateral(case, condition_index, alpha_deg, fin),
+    }
+    .map_err(|e| e.to_string());
+    add_sideslip(&mut s, &mut warnings, label, lateral);
     Ok((s, warnings))
 }
 
-/// The body with the vertical tail at one condition: the body alone (DATCOM 4.2) with the
-/// tail's zero-lift drag added to CD (CN, CA, XCP resolved again), and the body's and the
-/// tail's sideslip derivatives summed (5.2.1.1, 5.3.1.1).
+/// The body with its fins at one condition: the body alone (DATCOM 4.2) with the vertical
+/// tail's and ventral fin's zero-lift drag added to CD (CN, CA, XCP resolved again), and the
+/// body's and the fins' sideslip derivatives summed (5.2.1.1, 5.3.1.1).
 fn body_vertical_tail_coefficients(
     case: &Case,
     condition: &FlightCondition,
@@ -744,17 +805,24 @@ fn body_vertical_tail_coefficients(
     alpha_deg: &[f64],
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
     use crate::methods::lateral;
+    let label = "body-vertical tail";
     let (body, mut warnings) = body_alone_coefficients(case, condition, alpha_deg)?;
-    let drag = vertical_tail_drag(case, condition_index, "body-vertical tail", &mut warnings)?;
+    let drag = fins_drag(case, condition_index, label, &mut warnings)?;
     let cd: Vec<Option<f64>> = body.cd.iter().map(|c| c.map(|c| c + drag)).collect();
-    let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
-        alpha_deg,
-        cd,
-        body.cl.clone(),
-        body.cm.clone(),
-        body.cla.clone(),
-        body.cma.clone(),
-    ));
+    // Twin vertical panels alone on the body: the original prints no longitudinal numbers.
+    let panels_only = case.vertical_tail.is_none() && case.ventral_fin.is_none();
+    let mut s = if panels_only {
+        StaticCoefficients::empty(alpha_deg.len())
+    } else {
+        coefficients(&crate::methods::tail::Coefficients::resolved(
+            alpha_deg,
+            cd,
+            body.cl.clone(),
+            body.cm.clone(),
+            body.cla.clone(),
+            body.cma.clone(),
+        ))
+    };
     let body_sideslip = lateral::Lateral {
         alpha_deg: alpha_deg.to_vec(),
         cyb: body.cyb,
@@ -766,10 +834,10 @@ fn body_vertical_tail_coefficients(
         twin_panel_terms: None,
         warnings: Vec::new(),
     };
-    let total = vertical_tail_sideslip(case, condition_index, alpha_deg, &mut warnings)
-        .map(|fin| lateral::sum_with_warnings(vec![body_sideslip, fin]))
+    let total = fins_sideslip(case, condition_index, alpha_deg, label, &mut warnings)
+        .map(|fins| lateral::sum_with_warnings([vec![body_sideslip], fins].concat()))
         .map_err(|e| e.to_string());
-    add_sideslip(&mut s, &mut warnings, "body-vertical tail", total);
+    add_sideslip(&mut s, &mut warnings, label, total);
     Ok((s, warnings))
 }
 
@@ -843,16 +911,22 @@ fn dynamic_derivatives(
         match part {
             BODY_ALONE => body_alone(),
             HORIZONTAL_TAIL => horizontal_tail(),
-            VERTICAL_TAIL => {
-                // The vertical tail's roll and yaw terms (DATCOM 7.4.2, 7.4.3); the original
-                // prints 0 for its pitch-rate and α̇ derivatives.
-                let mut d = dy::fin_dynamic(
-                    case,
-                    index,
-                    alpha_deg,
-                    crate::methods::lateral::Fin::VerticalTail,
-                )
-                .map_err(|e| e.to_string())?;
+            VERTICAL_TAIL | VENTRAL_FIN => {
+                // The fin's roll and yaw terms (DATCOM 7.4.2, 7.4.3); the original prints 0
+                // for its pitch-rate and α̇ derivatives.
+                use crate::methods::lateral::Fin;
+                let fin = if part == VENTRAL_FIN {
+                    Fin::VentralFin
+                } else {
+                    Fin::VerticalTail
+                };
+                // Twin vertical panels without a vertical tail: no roll or yaw method (NDM),
+                // as the original.
+                let mut d = if part == VERTICAL_TAIL && case.vertical_tail.is_none() {
+                    Dynamic::no_method(alpha_deg)
+                } else {
+                    dy::fin_dynamic(case, index, alpha_deg, fin).map_err(|e| e.to_string())?
+                };
                 for column in [&mut d.clq, &mut d.cmq, &mut d.clad, &mut d.cmad] {
                     *column = dy::Column::first(n, Some(0.0));
                 }
@@ -929,18 +1003,39 @@ fn dynamic_derivatives(
     }
 }
 
-/// The original's name of build-up page `part` (one of the constants above) for `case`: with
-/// twin vertical panels ($TVTPAN) the pages with the vertical tail are named with them.
+/// The original's name of build-up page `part` (one of the constants above) for `case`: the
+/// pages with the vertical tail are named with the fins the case has besides it, twin vertical
+/// panels ($TVTPAN) on each, the ventral fin on those with the body (BODY-VERTICAL
+/// TAIL-VENTRAL FIN; the full configuration with a ventral fin is named by
+/// [`configuration_name`]).
 pub fn page_name(case: &Case, part: &str) -> String {
-    if case.twin_panels.is_none() {
+    let (vt, vf, twin) = (
+        case.vertical_tail.is_some(),
+        case.ventral_fin.is_some(),
+        case.twin_panels.is_some(),
+    );
+    if !vf && !twin {
         return part.to_string();
     }
+    let fins = |with_ventral_fin: bool| {
+        let mut names = Vec::new();
+        if vt {
+            names.push("VERTICAL TAIL");
+        }
+        if vf && with_ventral_fin {
+            names.push("VENTRAL FIN");
+        }
+        if twin {
+            names.push("TWIN VERTICAL PANEL");
+        }
+        names.join("-")
+    };
     match part {
-        VERTICAL_TAIL => "VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string(),
-        BODY_VT => "BODY-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string(),
-        WING_BODY_VT => "WING-BODY-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string(),
-        WING_BODY_VT_HT => {
-            "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-TWIN VERTICAL PANEL CONFIGURATION".to_string()
+        VERTICAL_TAIL => format!("{} CONFIGURATION", fins(false)),
+        BODY_VT => format!("BODY-{} CONFIGURATION", fins(true)),
+        WING_BODY_VT => format!("WING-BODY-{} CONFIGURATION", fins(true)),
+        WING_BODY_VT_HT if twin => {
+            format!("WING-BODY-HORIZONTAL TAIL-{} CONFIGURATION", fins(true))
         }
         other => other.to_string(),
     }
@@ -1141,49 +1236,50 @@ fn compute_case(case: &Case) -> CaseResults {
         } else {
             WING_BODY_VT_HT
         };
-        // A ventral fin without a horizontal tail (a finned rocket, WING-BODY-VERTICAL
-        // TAIL-VENTRAL FIN): the full configuration is the wing-body with its fins, computed
-        // as the wing-body-vertical tail page is (the fins' drag and sideslip terms).
-        let fins_only = vf && !ht;
         // In the original's page order.
         let body = case.body.is_some();
-        let parts: [(&str, bool); 11] = [
+        // With a ventral fin the pages with the vertical tail carry it too, and are named
+        // with it ([`page_name`]); without a horizontal tail (a finned rocket) the
+        // WING-BODY-VERTICAL TAIL-VENTRAL FIN page is the configuration.
+        let parts: [(&str, bool); 12] = [
             (LOW_ASPECT_RATIO, case.larwb.is_some()),
             (BODY_ALONE, body),
             (WING_ALONE, case.wing.is_some()),
             (HORIZONTAL_TAIL, ht),
-            (VERTICAL_TAIL, vt),
+            (VERTICAL_TAIL, vt || twin),
+            (VENTRAL_FIN, vf),
             (WING_BODY, wb),
             (BODY_HT, body && ht),
-            (BODY_VT, body && vt),
+            (BODY_VT, body && (vt || vf || twin)),
             (WING_BODY_HT, wb && ht),
-            (WING_BODY_VT, wb && vt),
-            (full, wb && (ht || fins_only) && (vt || vf || twin)),
+            (WING_BODY_VT, wb && (vt || vf || twin)),
+            (full, wb && ht && (vt || vf || twin)),
         ];
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;
             // The configurations with tails come from one computation per condition.
             let mut totals: Option<Result<crate::methods::tail::ConfigurationTotals, String>> =
                 None;
-            for (page, present) in parts {
-                let name = page_name(case, page);
+            for (part, present) in parts {
+                let name = page_name(case, part);
                 let own = configuration == name;
                 if !present || !(own || case.cards.build) {
                     continue;
                 }
-                // The method that gives the page.
-                let part = if fins_only && page == full {
-                    WING_BODY_VT
-                } else {
-                    page
-                };
                 let computed = match part {
                     LOW_ASPECT_RATIO => low_aspect_ratio_coefficients(case, &c, &f.alpha_deg),
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
                     WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg, wing_section),
                     WING_BODY => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),
                     HORIZONTAL_TAIL => horizontal_tail_coefficients(case, index, &f.alpha_deg),
-                    VERTICAL_TAIL => vertical_tail_coefficients(case, index, &f.alpha_deg),
+                    VERTICAL_TAIL => {
+                        let fin = crate::methods::lateral::Fin::VerticalTail;
+                        fin_alone_coefficients(case, index, &f.alpha_deg, fin)
+                    }
+                    VENTRAL_FIN => {
+                        let fin = crate::methods::lateral::Fin::VentralFin;
+                        fin_alone_coefficients(case, index, &f.alpha_deg, fin)
+                    }
                     BODY_HT => body_horizontal_tail_coefficients(case, index, &f.alpha_deg),
                     BODY_VT => body_vertical_tail_coefficients(case, &c, index, &f.alpha_deg),
                     _ => {
@@ -1218,6 +1314,7 @@ fn compute_case(case: &Case) -> CaseResults {
                         | WING_BODY
                         | HORIZONTAL_TAIL
                         | VERTICAL_TAIL
+                        | VENTRAL_FIN
                         | BODY_HT
                         | BODY_VT
                         | WING_BODY_VT

@@ -453,18 +453,8 @@ fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
     }
 }
 
-/// Twin vertical panels on the horizontal tail and no vertical tail (a corpus deck of this
-/// kind, an Ercoupe, had no numbers): the configuration's page was never computed, the panels'
-/// terms failed for want of VPHITE (which the original reads as 0 when not given), and the
-/// panels' figure 5.3.1.1-24c took the body's length from X = 0 instead of from its nose.
-/// Reference: what a build of the original's public source (gfortran, outside this repository)
-/// prints for this deck.
-#[test]
-fn twin_panels_without_a_vertical_tail_are_computed() {
-    /// The issue's agreement rule: 2 % or one unit in the last printed digit.
-    const RELATIVE: f64 = 0.02;
-    let deck = read(
-        " $FLTCON NMACH=1.0, MACH(1)=0.15, NALT=1.0, ALT(1)=0.0,\n   \
+/// Wing, body, horizontal tail and twin vertical panels, no vertical tail.
+const TWIN_PANELS_DECK: &str = " $FLTCON NMACH=1.0, MACH(1)=0.15, NALT=1.0, ALT(1)=0.0,\n   \
          NALPHA=4.0, ALSCHD(1)=-2.0,0.0,2.0,4.0$\n \
          $OPTINS SREF=12.0, CBARR=1.5, BLREF=8.0$\n \
          $SYNTHS XCG=0.7, ZCG=0.1, XW=-0.5, ZW=-0.1, ALIW=1.0,\n   XH=3.3, ZH=0.5, ALIH=-1.0$\n \
@@ -475,9 +465,19 @@ fn twin_panels_without_a_vertical_tail_are_computed() {
          NACA-H-4-0009\n \
          $HTPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=1.1, SAVSI=5.0,\n   \
          CHSTAT=0.25, TYPE=1.0$\n \
-         $TVTPAN BVP=0.5, BV=1.0, BDV=0.3, BH=2.2, SV=0.45, VLP=3.6, ZP=0.5$\n",
-    )
-    .with_original_rules();
+         $TVTPAN BVP=0.5, BV=1.0, BDV=0.3, BH=2.2, SV=0.45, VLP=3.6, ZP=0.5$\n";
+
+/// Twin vertical panels on the horizontal tail and no vertical tail (a corpus deck of this
+/// kind, an Ercoupe, had no numbers): the configuration's page was never computed, the panels'
+/// terms failed for want of VPHITE (which the original reads as 0 when not given), and the
+/// panels' figure 5.3.1.1-24c took the body's length from X = 0 instead of from its nose.
+/// Reference: what a build of the original's public source (gfortran, outside this repository)
+/// prints for this deck.
+#[test]
+fn twin_panels_without_a_vertical_tail_are_computed() {
+    /// The issue's agreement rule: 2 % or one unit in the last printed digit.
+    const RELATIVE: f64 = 0.02;
+    let deck = read(TWIN_PANELS_DECK).with_original_rules();
     let r = datcom::run(&deck);
     let case = &r.cases[0];
     let page = &case.conditions[0];
@@ -513,5 +513,148 @@ fn twin_panels_without_a_vertical_tail_are_computed() {
             .any(|w| w.contains("$TVTPAN gives no VPHITE")),
         "{:#?}",
         case.warnings
+    );
+}
+
+/// With BUILD the original prints the twin panels' own pages even without a vertical tail
+/// (TWIN VERTICAL PANEL, BODY-TWIN VERTICAL PANEL, WING-BODY-TWIN VERTICAL PANEL; the first two
+/// with sideslip numbers only); they were missing. Reference: the same build's listing.
+#[test]
+fn twin_panels_without_a_vertical_tail_have_their_build_up_pages() {
+    const RELATIVE: f64 = 0.02;
+    let deck = read(&format!("BUILD\n{TWIN_PANELS_DECK}")).with_original_rules();
+    let r = datcom::run(&deck);
+    let pages: Vec<&str> = r.cases[0]
+        .conditions
+        .iter()
+        .map(|c| c.configuration.as_str())
+        .collect();
+    assert_eq!(
+        pages,
+        [
+            "DATCOM BODY ALONE CONFIGURATION",
+            "WING ALONE CONFIGURATION",
+            "HORIZONTAL TAIL CONFIGURATION",
+            "TWIN VERTICAL PANEL CONFIGURATION",
+            "WING-BODY CONFIGURATION",
+            "BODY-HORIZONTAL TAIL CONFIGURATION",
+            "BODY-TWIN VERTICAL PANEL CONFIGURATION",
+            "WING-BODY-HORIZONTAL TAIL CONFIGURATION",
+            "WING-BODY-TWIN VERTICAL PANEL CONFIGURATION",
+            "WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL CONFIGURATION",
+        ]
+    );
+    let page = |name: &str| {
+        &r.cases[0]
+            .conditions
+            .iter()
+            .find(|c| c.configuration == name)
+            .expect("page")
+            .static_coefficients
+    };
+    let cyb = |name: &str| page(name).cyb[0].map(f64::to_radians).unwrap_or(f64::NAN);
+    for (name, printed) in [
+        ("TWIN VERTICAL PANEL CONFIGURATION", -3.143e-3),
+        ("BODY-TWIN VERTICAL PANEL CONFIGURATION", -4.328e-3),
+        ("WING-BODY-TWIN VERTICAL PANEL CONFIGURATION", -4.452e-3),
+    ] {
+        let ours = cyb(name);
+        assert!(
+            (ours - printed).abs() <= RELATIVE * printed.abs(),
+            "{name}: CYB {ours} against the original's {printed}"
+        );
+    }
+    // No longitudinal numbers on the panels' own pages, as the original; the wing-body's on
+    // the wing-body-panels page.
+    for name in [
+        "TWIN VERTICAL PANEL CONFIGURATION",
+        "BODY-TWIN VERTICAL PANEL CONFIGURATION",
+    ] {
+        assert!(page(name)
+            .cd
+            .iter()
+            .chain(&page(name).cl)
+            .all(Option::is_none));
+    }
+    assert_eq!(
+        page("WING-BODY-TWIN VERTICAL PANEL CONFIGURATION").cl,
+        page("WING-BODY CONFIGURATION").cl
+    );
+}
+
+/// With BUILD and a ventral fin the original names the pages with the vertical tail after
+/// both fins (BODY-VERTICAL TAIL-VENTRAL FIN, WING-BODY-VERTICAL TAIL-VENTRAL FIN) and prints
+/// the fin's own VENTRAL FIN page; ours had BODY-VERTICAL TAIL and WING-BODY-VERTICAL TAIL
+/// pages without the fin's drag, and no fin page. Reference: the same build's listing.
+#[test]
+fn a_ventral_fin_has_its_build_up_pages() {
+    const RELATIVE: f64 = 0.02;
+    let deck = read(
+        "BUILD\n \
+         $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=5.0, ALSCHD(1)=0.0,2.0,4.0,6.0,8.0$\n \
+         $OPTINS SREF=0.8, CBARR=10.0, BLREF=1.2$\n \
+         $SYNTHS XCG=6.0, ZCG=0.0, XW=9.0, ZW=0.0, ALIW=0.0, XV=9.0, ZV=0.0,\n   \
+         XVF=9.5, ZVF=-0.5, XH=10.5, ZH=0.3, VERTUP=.TRUE.$\n \
+         $BODY NX=3.0, X(1)=0.0,2.0,12.0, R(1)=0.0,0.5,0.5$\n\
+         NACA-W-4-0008\n \
+         $WGPLNF CHRDR=1.8, CHRDTP=0.9, SSPN=1.6, SSPNE=1.1, SAVSI=40.0, TYPE=1.0$\n\
+         NACA-V-4-0008\n \
+         $VTPLNF CHRDR=1.8, CHRDTP=0.9, SSPN=1.6, SSPNE=1.1, SAVSI=40.0, TYPE=1.0$\n\
+         NACA-F-4-0006\n \
+         $VFPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=0.7, SAVSI=30.0, TYPE=1.0$\n\
+         NACA-H-4-0009\n \
+         $HTPLNF CHRDR=0.8, CHRDTP=0.5, SSPN=1.3, SSPNE=0.9, SAVSI=10.0, TYPE=1.0$\n",
+    )
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    let pages: Vec<&str> = r.cases[0]
+        .conditions
+        .iter()
+        .map(|c| c.configuration.as_str())
+        .collect();
+    assert_eq!(
+        pages,
+        [
+            "DATCOM BODY ALONE CONFIGURATION",
+            "WING ALONE CONFIGURATION",
+            "HORIZONTAL TAIL CONFIGURATION",
+            "VERTICAL TAIL CONFIGURATION",
+            "VENTRAL FIN CONFIGURATION",
+            "WING-BODY CONFIGURATION",
+            "BODY-HORIZONTAL TAIL CONFIGURATION",
+            "BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION",
+            "WING-BODY-HORIZONTAL TAIL CONFIGURATION",
+            "WING-BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION",
+            "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-VENTRAL FIN CONFIGURATION",
+        ]
+    );
+    let page = |name: &str| {
+        &r.cases[0]
+            .conditions
+            .iter()
+            .find(|c| c.configuration == name)
+            .expect("page")
+            .static_coefficients
+    };
+    let near = |ours: Option<f64>, printed: f64, unit: f64| {
+        let ours = ours.unwrap_or(f64::NAN);
+        assert!(
+            (ours - printed).abs() <= (RELATIVE * printed.abs()).max(unit),
+            "{ours} against the original's {printed}"
+        );
+    };
+    // The fin's drag, alone and with the body and the vertical tail.
+    near(page("VENTRAL FIN CONFIGURATION").cd[0], 0.006, 0.001);
+    near(
+        page("BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION").cd[0],
+        0.227,
+        0.001,
+    );
+    // Body, vertical tail and ventral fin in sideslip, per degree in the listing.
+    near(
+        page("BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION").cyb[0].map(f64::to_radians),
+        -0.2347,
+        1e-4,
     );
 }

@@ -68,7 +68,8 @@ pub enum LateralError {
     NoCondition { index: usize },
     #[error("the wing results have {found} angles of attack, the schedule has {expected}")]
     AngleCount { expected: usize, found: usize },
-    #[error("the wing planform is incomplete: {reason}")]
+    /// An input the method needs is missing or out of range (the reason names it).
+    #[error("incomplete input: {reason}")]
     Geometry { reason: String },
     #[error("no lateral reference length: give BLREF in $OPTINS")]
     NoReferenceSpan,

@@ -92,14 +92,20 @@ fn section_slope(case: &Case, surface: Surface, k: usize) -> Result<f64, Lateral
     if let Some(per_deg) = user {
         return Ok(per_deg.to_degrees());
     }
-    let none = || LateralError::Geometry {
+    let none = || {
+        LateralError::Geometry {
         reason: format!(
-            "the {} has no section lift-curve slope (CLALPA or an airfoil)",
+            "the {} has no section lift-curve slope (give a NACA card, section coordinates or CLALPA in ${})",
             match surface {
                 Surface::VentralFin => "ventral fin",
                 _ => "vertical tail",
+            },
+            match surface {
+                Surface::VentralFin => "VFSCHR",
+                _ => "VTSCHR",
             }
         ),
+    }
     };
     let s = surface_section(case, surface)
         .ok_or_else(none)?

@@ -340,7 +340,10 @@ pub fn configuration(
     condition_index: usize,
     alpha_deg: &[f64],
 ) -> Result<ConfigurationTotals, TailError> {
-    let has_fin = case.vertical_tail.is_some() || case.ventral_fin.is_some();
+    // Twin vertical panels have no longitudinal terms (docs/tail.md): their pages carry the
+    // same numbers as without them.
+    let has_fin =
+        case.vertical_tail.is_some() || case.ventral_fin.is_some() || case.twin_panels.is_some();
     if case.horizontal_tail.is_none() && !has_fin {
         return Err(TailError::NoTail);
     }
