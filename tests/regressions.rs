@@ -658,3 +658,44 @@ fn a_ventral_fin_has_its_build_up_pages() {
         1e-4,
     );
 }
+
+/// A wing given by its section characteristics ($WGSCHR with CLMAX, no CLMAXL, no NACA card)
+/// has no maximum lift at Mach 0, so the wing-alone page's CYB column was blank without a
+/// word. It now says why and what to give; with CLMAXL the column is computed.
+#[test]
+fn a_wing_without_low_speed_maximum_lift_says_why_it_has_no_cyb() {
+    let deck = |clmaxl: &str| {
+        read(&format!(
+            "BUILD\n $FLTCON NALPHA=3.0, ALSCHD(1)=-2.0,0.0,2.0, NMACH=1.0, MACH(1)=0.6, \
+             RNNUB(1)=4.26E6$\n $OPTINS SREF=2.25, CBARR=0.822, BLREF=3.00$\n \
+             $SYNTHS XCG=2.60, XW=1.70$\n \
+             $BODY NX=4.0, X(1)=0.0,0.5,2.5,4.5, R(1)=0.0,0.2,0.2,0.15$\n \
+             $WGPLNF CHRDTP=0.346, SSPNE=1.29, SSPN=1.5, CHRDR=1.16, SAVSI=45.0,\n   \
+             CHSTAT=0.25, TYPE=1.0$\n \
+             $WGSCHR TOVC=.06, XOVC=0.4, CLALPA(1)=0.131, CLMAX(1)=.82,{clmaxl} \
+             CMO=0.0, LERI=.0025$\n"
+        ))
+    };
+    let wing_alone_cyb = |d: &datcom::Deck| {
+        let r = datcom::run(d);
+        let page = r.cases[0]
+            .conditions
+            .iter()
+            .find(|c| c.configuration == "WING ALONE CONFIGURATION")
+            .expect("wing-alone page")
+            .static_coefficients
+            .cyb
+            .clone();
+        (page, r.cases[0].warnings.clone())
+    };
+    let (cyb, warnings) = wing_alone_cyb(&deck(""));
+    assert!(cyb.iter().all(Option::is_none));
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.contains("no maximum lift at Mach 0: give CLMAXL")),
+        "{warnings:#?}"
+    );
+    let (cyb, _) = wing_alone_cyb(&deck(" CLMAXL=.82,"));
+    assert!(cyb.iter().all(Option::is_some), "{cyb:?}");
+}

@@ -10,7 +10,7 @@ use super::{finite, wing_inputs, Lateral, LateralError, LateralWarning, WingInpu
 use crate::case::units::from_si;
 use crate::case::Case;
 use crate::deck::schema::Dimension;
-use crate::methods::wing::{mach_zero_wing, Sweep, WingAlone, WingPlanform, WingType};
+use crate::methods::wing::{mach_zero_wing, Sweep, WingAlone, WingPlanform, WingType, WingWarning};
 
 /// Degrees per radian: the charts and the original's equations are per degree.
 pub(super) const DEG_PER_RAD: f64 = 180.0 / PI;
@@ -579,7 +579,17 @@ fn mach_zero_lift(
 ) -> Vec<Option<f64>> {
     let n = alpha_deg.len();
     match mach_zero_wing(case, condition_index, alpha_deg) {
-        Ok(low) if low.wing.cl.len() == n => low.wing.cl,
+        Ok(low) if low.wing.cl.len() == n => {
+            if low.wing.cl.iter().all(Option::is_none)
+                && low.wing.warnings.contains(&WingWarning::NoSectionMaxLift)
+            {
+                // The original reads an unset CLMAXL as 0 and computes on; we say why not.
+                warnings.push(LateralWarning::NoMachZeroLift {
+                    reason: "the wing has no maximum lift at Mach 0: give CLMAXL in $WGSCHR (or a NACA card or section coordinates)".into(),
+                });
+            }
+            low.wing.cl
+        }
         Ok(_) => {
             warnings.push(LateralWarning::NoMachZeroLift {
                 reason: "the lift curve is not computed".into(),
