@@ -1003,6 +1003,30 @@ fn dynamic_derivatives(
     }
 }
 
+/// The components a build-up page holds, one bit each: body, wing, horizontal tail, the
+/// vertical tail with its twin panels, the ventral fin (every fin on the pages named after
+/// the vertical tail). Any other name is the full configuration.
+fn page_components(part: &str) -> u8 {
+    const BODY: u8 = 1;
+    const WING: u8 = 2;
+    const HORIZONTAL: u8 = 4;
+    const VERTICAL: u8 = 8;
+    const VENTRAL: u8 = 16;
+    match part {
+        BODY_ALONE => BODY,
+        WING_ALONE => WING,
+        HORIZONTAL_TAIL => HORIZONTAL,
+        VERTICAL_TAIL => VERTICAL,
+        VENTRAL_FIN => VENTRAL,
+        WING_BODY => WING | BODY,
+        BODY_HT => BODY | HORIZONTAL,
+        BODY_VT => BODY | VERTICAL | VENTRAL,
+        WING_BODY_HT => WING | BODY | HORIZONTAL,
+        WING_BODY_VT => WING | BODY | VERTICAL | VENTRAL,
+        _ => WING | BODY | HORIZONTAL | VERTICAL | VENTRAL,
+    }
+}
+
 /// The original's name of build-up page `part` (one of the constants above) for `case`: the
 /// pages with the vertical tail are named with the fins the case has besides it, twin vertical
 /// panels ($TVTPAN) on each, the ventral fin on those with the body (BODY-VERTICAL
@@ -1255,6 +1279,41 @@ fn compute_case(case: &Case) -> CaseResults {
             (WING_BODY_VT, wb && (vt || vf || twin)),
             (full, wb && ht && (vt || vf || twin)),
         ];
+        // The case's own pages: the page of its configuration; for a combination the
+        // build-up has no page for (a wing and tails without a body, a body and tails without
+        // a wing), the largest pages it has, as the original prints them (WING ALONE and
+        // HORIZONTAL TAIL for a wing with a horizontal tail; BODY-HORIZONTAL TAIL and
+        // BODY-VERTICAL TAIL for a body with both tails).
+        let own_pages: Vec<&str> = {
+            let present: Vec<&str> = parts
+                .iter()
+                .filter(|(part, present)| *present && *part != LOW_ASPECT_RATIO)
+                .map(|(part, _)| *part)
+                .collect();
+            match parts
+                .iter()
+                .find(|(part, present)| *present && page_name(case, part) == configuration)
+            {
+                Some((part, _)) => vec![*part],
+                None => {
+                    let within = |a: &str, b: &str| {
+                        let (a, b) = (page_components(a), page_components(b));
+                        a != b && a & b == a
+                    };
+                    present
+                        .iter()
+                        .copied()
+                        .filter(|a| !present.iter().any(|b| within(a, b)))
+                        .collect()
+                }
+            }
+        };
+        if own_pages.len() > 1 && !conds.is_empty() {
+            warnings.push(format!(
+                "{configuration}: the build-up has no page of its own for this combination of components: the pages of its largest parts are given ({}), as the original prints them",
+                own_pages.join(", ")
+            ));
+        }
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;
             // The configurations with tails come from one computation per condition.
@@ -1262,7 +1321,7 @@ fn compute_case(case: &Case) -> CaseResults {
                 None;
             for (part, present) in parts {
                 let name = page_name(case, part);
-                let own = configuration == name;
+                let own = own_pages.contains(&part);
                 if !present || !(own || case.cards.build) {
                     continue;
                 }
@@ -1342,7 +1401,7 @@ fn compute_case(case: &Case) -> CaseResults {
                 }
                 if own {
                     own_computed = true;
-                    if case.cards.part {
+                    if case.cards.part && own_pages.last() == Some(&part) {
                         entry.auxiliary = Some(crate::auxiliary::auxiliary_output(
                             case,
                             index,

@@ -699,3 +699,53 @@ fn a_wing_without_low_speed_maximum_lift_says_why_it_has_no_cyb() {
     let (cyb, _) = wing_alone_cyb(&deck(" CLMAXL=.82,"));
     assert!(cyb.iter().all(Option::is_some), "{cyb:?}");
 }
+
+/// A wing and a horizontal tail without a body: the build-up has no WING-HORIZONTAL TAIL
+/// page, and the run printed an empty one. The original prints the pages of the largest parts
+/// it has, WING ALONE and HORIZONTAL TAIL; so do we, with a warning saying so. Reference: a
+/// build of the original's public source (gfortran, outside this repository) on this deck.
+#[test]
+fn a_combination_without_its_own_page_gives_its_largest_parts() {
+    const RELATIVE: f64 = 0.02;
+    let deck = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.15, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=4.0, ALSCHD(1)=-2.0,0.0,2.0,4.0$\n \
+         $OPTINS SREF=12.0, CBARR=1.5, BLREF=8.0$\n \
+         $SYNTHS XCG=0.7, ZCG=0.1, XW=-0.5, ZW=-0.1, ALIW=1.0,\n   XH=3.3, ZH=0.5, ALIH=-1.0$\n\
+         NACA-W-4-2412\n \
+         $WGPLNF CHRDR=1.6, CHRDTP=1.2, SSPN=4.0, SSPNE=3.5, SAVSI=0.0,\n   \
+         CHSTAT=0.25, TYPE=1.0$\n\
+         NACA-H-4-0009\n \
+         $HTPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=1.1, SAVSI=5.0,\n   \
+         CHSTAT=0.25, TYPE=1.0$\n",
+    )
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    let case = &r.cases[0];
+    let pages: Vec<&str> = case
+        .conditions
+        .iter()
+        .map(|c| c.configuration.as_str())
+        .collect();
+    assert_eq!(
+        pages,
+        ["WING ALONE CONFIGURATION", "HORIZONTAL TAIL CONFIGURATION"]
+    );
+    for (page, printed) in [(0, [0.049, 0.168]), (1, [-0.024, -0.008])] {
+        for (k, cl) in printed.into_iter().enumerate() {
+            let ours = case.conditions[page].static_coefficients.cl[k].unwrap_or(f64::NAN);
+            assert!(
+                (ours - cl).abs() <= (RELATIVE * cl.abs()).max(0.001),
+                "{}: CL {ours} against the original's {cl}",
+                pages[page]
+            );
+        }
+    }
+    assert!(
+        case.warnings
+            .iter()
+            .any(|w| w.contains("the pages of its largest parts are given")),
+        "{:#?}",
+        case.warnings
+    );
+}
