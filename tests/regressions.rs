@@ -388,6 +388,40 @@ fn a_fin_without_body_depth_warns_once_without_quoting_the_largest_float() {
     );
 }
 
+/// The issue's agreement rule for a number the original printed: within 2 % or one unit in
+/// its last printed digit (`unit`).
+const PRINTED_RELATIVE: f64 = 0.02;
+
+fn agrees(ours: Option<f64>, printed: f64, unit: f64) {
+    let ours = ours.unwrap_or(f64::NAN);
+    assert!(
+        (ours - printed).abs() <= (PRINTED_RELATIVE * printed.abs()).max(unit),
+        "{ours} against the original's {printed}"
+    );
+}
+
+/// The configurations of the first case's pages, in order.
+fn page_names(r: &datcom::results::Results) -> Vec<&str> {
+    r.cases[0]
+        .conditions
+        .iter()
+        .map(|c| c.configuration.as_str())
+        .collect()
+}
+
+/// The static coefficients of the first case's page `name`.
+fn page<'r>(
+    r: &'r datcom::results::Results,
+    name: &str,
+) -> &'r datcom::results::StaticCoefficients {
+    &r.cases[0]
+        .conditions
+        .iter()
+        .find(|c| c.configuration == name)
+        .unwrap_or_else(|| panic!("no page {name}"))
+        .static_coefficients
+}
+
 /// A finned rocket: wing, vertical tail and ventral fin, no horizontal tail (a corpus deck of
 /// this kind, OpenPost's, had no numbers at all). Its page was never computed, its empty page
 /// said "the warnings say why" with no warning, the ventral fin's sideslip terms failed for
@@ -395,8 +429,6 @@ fn a_fin_without_body_depth_warns_once_without_quoting_the_largest_float() {
 /// of the original's public source (gfortran, outside this repository) prints for this deck.
 #[test]
 fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
-    /// The issue's agreement rule: 2 % or one unit in the last printed digit.
-    const RELATIVE: f64 = 0.02;
     let deck = read(
         " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
          NALPHA=5.0, ALSCHD(1)=0.0,2.0,4.0,6.0,8.0$\n \
@@ -413,34 +445,29 @@ fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
     .with_original_rules();
     let r = datcom::run(&deck);
     let case = &r.cases[0];
-    let page = &case.conditions[0];
     assert_eq!(
-        page.configuration,
-        "WING-BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION"
+        page_names(&r),
+        ["WING-BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION"]
     );
-    let near = |ours: Option<f64>, printed: f64, unit: f64| {
-        let ours = ours.unwrap_or(f64::NAN);
-        assert!(
-            (ours - printed).abs() <= (RELATIVE * printed.abs()).max(unit),
-            "{ours} against the original's {printed}"
-        );
-    };
-    let s = &page.static_coefficients;
+    let s = page(&r, "WING-BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION");
     // CD holds the ventral fin's skin friction (it has no section).
     for (k, cd) in [0.268, 0.278, 0.309, 0.364, 0.446].into_iter().enumerate() {
-        near(s.cd[k], cd, 0.001);
+        agrees(s.cd[k], cd, 0.001);
     }
     for (k, cl) in [0.0, 0.543, 1.119, 1.722, 2.337].into_iter().enumerate() {
-        near(s.cl[k], cl, 0.001);
+        agrees(s.cl[k], cl, 0.001);
     }
     // Per degree in the listing; ours per radian.
     let per_deg = |v: Option<f64>| v.map(f64::to_radians);
-    near(per_deg(s.cyb[0]), -0.1642, 1e-4);
-    near(per_deg(s.cnb[0]), 0.2314, 1e-4);
-    near(per_deg(s.clb[0]), -0.07793, 1e-5);
-    let d = page.dynamic.as_ref().expect("DAMP gives a dynamic block");
-    near(per_deg(d.cnr[0]), -2.845, 1e-3);
-    near(per_deg(d.clr[0]), 0.5126, 1e-4);
+    agrees(per_deg(s.cyb[0]), -0.1642, 1e-4);
+    agrees(per_deg(s.cnb[0]), 0.2314, 1e-4);
+    agrees(per_deg(s.clb[0]), -0.07793, 1e-5);
+    let d = case.conditions[0]
+        .dynamic
+        .as_ref()
+        .expect("DAMP gives a dynamic block");
+    agrees(per_deg(d.cnr[0]), -2.845, 1e-3);
+    agrees(per_deg(d.clr[0]), 0.5126, 1e-4);
     for said in [
         "the ventral fin's sideslip and roll and yaw rate terms are left out",
         "VENTRAL FIN: no section (NACA card, coordinates or TOVC): its zero-lift drag is skin friction only",
@@ -475,37 +502,30 @@ const TWIN_PANELS_DECK: &str = " $FLTCON NMACH=1.0, MACH(1)=0.15, NALT=1.0, ALT(
 /// prints for this deck.
 #[test]
 fn twin_panels_without_a_vertical_tail_are_computed() {
-    /// The issue's agreement rule: 2 % or one unit in the last printed digit.
-    const RELATIVE: f64 = 0.02;
     let deck = read(TWIN_PANELS_DECK).with_original_rules();
     let r = datcom::run(&deck);
     let case = &r.cases[0];
-    let page = &case.conditions[0];
     assert_eq!(
-        page.configuration,
-        "WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL CONFIGURATION"
+        page_names(&r),
+        ["WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL CONFIGURATION"]
     );
-    let near = |ours: Option<f64>, printed: f64, unit: f64| {
-        let ours = ours.unwrap_or(f64::NAN);
-        assert!(
-            (ours - printed).abs() <= (RELATIVE * printed.abs()).max(unit),
-            "{ours} against the original's {printed}"
-        );
-    };
-    let s = &page.static_coefficients;
+    let s = page(
+        &r,
+        "WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL CONFIGURATION",
+    );
     for (k, cl) in [0.019, 0.179, 0.348, 0.523].into_iter().enumerate() {
-        near(s.cl[k], cl, 0.001);
+        agrees(s.cl[k], cl, 0.001);
     }
     // Per degree in the listing; ours per radian. The panels' share of CYB is about a third:
     // with the body measured from X = 0, CYB was 4 % larger.
     let per_deg = |v: Option<f64>| v.map(f64::to_radians);
-    near(per_deg(s.cyb[0]), -4.452e-3, 1e-6);
-    near(per_deg(s.cnb[0]), 7.358e-4, 1e-7);
+    agrees(per_deg(s.cyb[0]), -4.452e-3, 1e-6);
+    agrees(per_deg(s.cnb[0]), 7.358e-4, 1e-7);
     for (k, clb) in [-1.230e-4, -2.454e-4, -3.759e-4, -5.146e-4]
         .into_iter()
         .enumerate()
     {
-        near(per_deg(s.clb[k]), clb, 1e-7);
+        agrees(per_deg(s.clb[k]), clb, 1e-7);
     }
     assert!(
         case.warnings
@@ -521,14 +541,9 @@ fn twin_panels_without_a_vertical_tail_are_computed() {
 /// with sideslip numbers only); they were missing. Reference: the same build's listing.
 #[test]
 fn twin_panels_without_a_vertical_tail_have_their_build_up_pages() {
-    const RELATIVE: f64 = 0.02;
     let deck = read(&format!("BUILD\n{TWIN_PANELS_DECK}")).with_original_rules();
     let r = datcom::run(&deck);
-    let pages: Vec<&str> = r.cases[0]
-        .conditions
-        .iter()
-        .map(|c| c.configuration.as_str())
-        .collect();
+    let pages = page_names(&r);
     assert_eq!(
         pages,
         [
@@ -544,25 +559,13 @@ fn twin_panels_without_a_vertical_tail_have_their_build_up_pages() {
             "WING-BODY-HORIZONTAL TAIL-TWIN VERTICAL PANEL CONFIGURATION",
         ]
     );
-    let page = |name: &str| {
-        &r.cases[0]
-            .conditions
-            .iter()
-            .find(|c| c.configuration == name)
-            .expect("page")
-            .static_coefficients
-    };
-    let cyb = |name: &str| page(name).cyb[0].map(f64::to_radians).unwrap_or(f64::NAN);
+    let page = |name: &str| page(&r, name);
     for (name, printed) in [
         ("TWIN VERTICAL PANEL CONFIGURATION", -3.143e-3),
         ("BODY-TWIN VERTICAL PANEL CONFIGURATION", -4.328e-3),
         ("WING-BODY-TWIN VERTICAL PANEL CONFIGURATION", -4.452e-3),
     ] {
-        let ours = cyb(name);
-        assert!(
-            (ours - printed).abs() <= RELATIVE * printed.abs(),
-            "{name}: CYB {ours} against the original's {printed}"
-        );
+        agrees(page(name).cyb[0].map(f64::to_radians), printed, 1e-6);
     }
     // No longitudinal numbers on the panels' own pages, as the original; the wing-body's on
     // the wing-body-panels page.
@@ -588,7 +591,6 @@ fn twin_panels_without_a_vertical_tail_have_their_build_up_pages() {
 /// pages without the fin's drag, and no fin page. Reference: the same build's listing.
 #[test]
 fn a_ventral_fin_has_its_build_up_pages() {
-    const RELATIVE: f64 = 0.02;
     let deck = read(
         "BUILD\n \
          $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
@@ -608,11 +610,7 @@ fn a_ventral_fin_has_its_build_up_pages() {
     )
     .with_original_rules();
     let r = datcom::run(&deck);
-    let pages: Vec<&str> = r.cases[0]
-        .conditions
-        .iter()
-        .map(|c| c.configuration.as_str())
-        .collect();
+    let pages = page_names(&r);
     assert_eq!(
         pages,
         [
@@ -629,30 +627,16 @@ fn a_ventral_fin_has_its_build_up_pages() {
             "WING-BODY-HORIZONTAL TAIL-VERTICAL TAIL-VENTRAL FIN CONFIGURATION",
         ]
     );
-    let page = |name: &str| {
-        &r.cases[0]
-            .conditions
-            .iter()
-            .find(|c| c.configuration == name)
-            .expect("page")
-            .static_coefficients
-    };
-    let near = |ours: Option<f64>, printed: f64, unit: f64| {
-        let ours = ours.unwrap_or(f64::NAN);
-        assert!(
-            (ours - printed).abs() <= (RELATIVE * printed.abs()).max(unit),
-            "{ours} against the original's {printed}"
-        );
-    };
+    let page = |name: &str| page(&r, name);
     // The fin's drag, alone and with the body and the vertical tail.
-    near(page("VENTRAL FIN CONFIGURATION").cd[0], 0.006, 0.001);
-    near(
+    agrees(page("VENTRAL FIN CONFIGURATION").cd[0], 0.006, 0.001);
+    agrees(
         page("BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION").cd[0],
         0.227,
         0.001,
     );
     // Body, vertical tail and ventral fin in sideslip, per degree in the listing.
-    near(
+    agrees(
         page("BODY-VERTICAL TAIL-VENTRAL FIN CONFIGURATION").cyb[0].map(f64::to_radians),
         -0.2347,
         1e-4,
@@ -706,7 +690,6 @@ fn a_wing_without_low_speed_maximum_lift_says_why_it_has_no_cyb() {
 /// build of the original's public source (gfortran, outside this repository) on this deck.
 #[test]
 fn a_combination_without_its_own_page_gives_its_largest_parts() {
-    const RELATIVE: f64 = 0.02;
     let deck = read(
         " $FLTCON NMACH=1.0, MACH(1)=0.15, NALT=1.0, ALT(1)=0.0,\n   \
          NALPHA=4.0, ALSCHD(1)=-2.0,0.0,2.0,4.0$\n \
@@ -731,14 +714,12 @@ fn a_combination_without_its_own_page_gives_its_largest_parts() {
         pages,
         ["WING ALONE CONFIGURATION", "HORIZONTAL TAIL CONFIGURATION"]
     );
-    for (page, printed) in [(0, [0.049, 0.168]), (1, [-0.024, -0.008])] {
+    for (name, printed) in [
+        ("WING ALONE CONFIGURATION", [0.049, 0.168]),
+        ("HORIZONTAL TAIL CONFIGURATION", [-0.024, -0.008]),
+    ] {
         for (k, cl) in printed.into_iter().enumerate() {
-            let ours = case.conditions[page].static_coefficients.cl[k].unwrap_or(f64::NAN);
-            assert!(
-                (ours - cl).abs() <= (RELATIVE * cl.abs()).max(0.001),
-                "{}: CL {ours} against the original's {cl}",
-                pages[page]
-            );
+            agrees(page(&r, name).cl[k], cl, 0.001);
         }
     }
     assert!(
