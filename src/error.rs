@@ -87,6 +87,10 @@ pub enum DeckProblem {
         "text after column 80 (`{found}`) is ignored by the original program; it is read here"
     )]
     PastColumn80 { found: String },
+    #[error(
+        "the number `{found}` has {length} characters; the original program reads at most 11 (with 12 to 15 it does not run the case, with more it reads another value); it is read here in full"
+    )]
+    LongNumber { found: String, length: usize },
     #[error("{what} is accepted here; the original program rejects it")]
     Dialect { what: String },
     #[error("text ignored: `{found}`")]

@@ -730,3 +730,28 @@ fn a_combination_without_its_own_page_gives_its_largest_parts() {
         case.warnings
     );
 }
+
+/// A number longer than the original reads (11 characters) was read silently: a build of the
+/// original's source does not run the case with 12 to 15 characters and reads XCG =
+/// 8.030000000000001 as 8.0. It is a warning at the number now; 11 characters are not.
+#[test]
+fn numbers_the_original_cannot_read_are_reported() {
+    let d = read(&format!(
+        "{FLIGHT} $OPTINS SREF=1.0, CBARR=8.030000000$\n $BODY NX=2.0, X(1)=0.0,8.030000000000001, R(1)=0.5,0.5$\n"
+    ));
+    let long: Vec<String> = d
+        .diagnostics
+        .iter()
+        .filter(|x| {
+            x.to_string()
+                .contains("the original program reads at most 11")
+        })
+        .map(|x| x.to_string())
+        .collect();
+    assert_eq!(long.len(), 1, "{long:#?}");
+    assert!(
+        long[0].contains("t.dcm:4:") && long[0].contains("`8.030000000000001` has 17 characters"),
+        "{}",
+        long[0]
+    );
+}

@@ -26,6 +26,12 @@ use schema::{Kind, Table};
 /// Columns the original program reads from each card.
 pub const CARD_COLUMNS: usize = 80;
 
+/// The longest number the original program reads, in characters: with 12 to 15 it does not
+/// run the case, with 16 or more it reads another value (measured with a build of its source:
+/// XCG=8.030000000 is read, XCG=8.0300000001 stops the case, XCG=8.030000000000001 is read as
+/// 8.0).
+pub const NUMBER_CHARACTERS: usize = 11;
+
 /// The value of one namelist variable as read.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
@@ -649,6 +655,42 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// A warning for each number of the body from token `from` on that the original cannot
+    /// read ([`NUMBER_CHARACTERS`]).
+    fn long_numbers(&mut self, from: usize) {
+        let long: Vec<(usize, usize, String)> = self.body[from..]
+            .iter()
+            .filter_map(|t| match t.tok {
+                lexer::Tok::Number { text, .. } if text.len() > NUMBER_CHARACTERS => {
+                    Some((t.line, t.column, text.to_string()))
+                }
+                _ => None,
+            })
+            .collect();
+        // The namelist: the open one, or the one this line opens.
+        let name = self.open.as_ref().map(|o| o.name.to_string()).or_else(|| {
+            self.body.iter().find_map(|t| match &t.tok {
+                lexer::Tok::Open(name) => Some(name.to_string()),
+                _ => None,
+            })
+        });
+        for (line, column, text) in long {
+            self.diags.push(
+                Severity::Warning,
+                (line, column),
+                name.as_deref(),
+                None,
+                DeckProblem::LongNumber {
+                    length: text.chars().count(),
+                    found: text,
+                },
+                Some(format!(
+                    "write it with at most {NUMBER_CHARACTERS} characters: a REAL of the original holds about 7 significant digits"
+                )),
+            );
+        }
+    }
+
     /// A line that begins something new (a control card or another namelist), which, met inside
     /// a namelist, means that namelist was never closed.
     fn begins_new(text: &str, n: usize) -> bool {
@@ -696,6 +738,7 @@ impl<'a> Reader<'a> {
         self.open = Some(open);
         let from = self.body.len();
         lexer::lex_line(text, n, 1, &mut self.body);
+        self.long_numbers(from);
         self.feed(from);
     }
 
@@ -819,6 +862,7 @@ impl<'a> Reader<'a> {
             // With no namelist open, every token read before has been sorted.
             debug_assert!(self.body.is_empty());
             lexer::lex_line(text, n, 1, &mut self.body);
+            self.long_numbers(0);
             let toks = &self.body;
             // `$ NAME`: a blank between `$` and a namelist's name.
             if let (Some(Tok::Close), Some(Tok::Name(name))) =

@@ -1,18 +1,79 @@
 //! Writing cases back as deck text that both this reader and the original program accept:
 //! control cards from column 1, namelists as ` $NAME` with assignments on cards of at most 80
-//! columns, numbers in a form that reads back to the same `f64`.
+//! columns, numbers of at most 11 characters (the most the original reads) that read back to
+//! the same `f64` where 11 characters hold it.
 
 use super::cards::{DerivUnit, Dim, NacaSeries, Surface};
-use super::{RawCase, Value, CARD_COLUMNS};
+use super::{RawCase, Value, CARD_COLUMNS, NUMBER_CHARACTERS};
 
 /// A number as the shortest text that reads back to the same value, always with a decimal
-/// point or exponent so that it reads as REAL.
+/// point or exponent so that it reads as REAL; when that text is longer than the original
+/// reads ([`NUMBER_CHARACTERS`]), the nearest decimal of at most that many characters: 6
+/// significant digits or more for magnitudes from 1e-9 to 1e10 (the original's REAL holds
+/// about 7), as few as 4 for a negative number with a three-digit exponent.
 pub fn number(v: f64) -> String {
+    let exact = shortest(v);
+    if exact.len() <= NUMBER_CHARACTERS || !v.is_finite() {
+        return exact;
+    }
+    (1..=17)
+        .rev()
+        .map(|digits| with_digits(v, digits))
+        .find(|s| s.len() <= NUMBER_CHARACTERS)
+        .unwrap_or(exact)
+}
+
+/// The shortest text that reads back to `v` exactly, as REAL.
+fn shortest(v: f64) -> String {
     let s = format!("{v:?}");
-    if s.contains(['.', 'e', 'E']) {
+    let fixed = if s.contains(['.', 'e', 'E']) {
         s.replace('e', "E")
     } else {
         format!("{s}.0")
+    };
+    // Rust writes 1e16 and up in full: the exponent form is shorter there.
+    let exponent = exponent_form(&format!("{v:e}"));
+    if exponent.len() < fixed.len() && exponent.parse::<f64>() == Ok(v) {
+        exponent
+    } else {
+        fixed
+    }
+}
+
+/// `v` rounded to `digits` significant digits, in the shorter of fixed and exponent form.
+fn with_digits(v: f64, digits: usize) -> String {
+    let exponent = exponent_form(&format!("{v:.*e}", digits - 1));
+    let magnitude = if v == 0.0 {
+        0
+    } else {
+        v.abs().log10().floor() as i64
+    };
+    let decimals = (digits as i64 - 1 - magnitude).max(0) as usize;
+    let fixed = trim_zeros(&format!("{v:.decimals$}"));
+    if fixed.len() <= exponent.len() && fixed.parse::<f64>().ok() == exponent.parse::<f64>().ok() {
+        fixed
+    } else {
+        exponent
+    }
+}
+
+/// Rust's `1.2300e5` as `1.23E5` (a mantissa with a decimal point, so that it reads as REAL).
+fn exponent_form(s: &str) -> String {
+    let (mantissa, exp) = s.split_once('e').unwrap_or((s, "0"));
+    let mantissa = trim_zeros(mantissa);
+    format!("{mantissa}E{exp}")
+}
+
+/// `1.2300` as `1.23`, `5.000` and `5` as `5.0`.
+fn trim_zeros(s: &str) -> String {
+    if !s.contains('.') {
+        return format!("{s}.0");
+    }
+    let t = s.trim_end_matches('0');
+    if t.ends_with('.') {
+        format!("{t}0")
+    } else {
+        t.to_string()
     }
 }
 
@@ -164,4 +225,47 @@ pub fn write_deck(cases: &[RawCase]) -> String {
         .map(write_case)
         .collect::<Vec<_>>()
         .join("NEXT CASE\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The largest relative rounding of a number from 1e-9 to 1e10 that needs more than 11
+    /// characters: an 11-character decimal holds at least 6 significant digits there
+    /// (`-1.23457E-9`), half a unit of the sixth.
+    const ROUNDING: f64 = 5e-6;
+
+    #[test]
+    fn numbers_fit_the_original_and_read_back() {
+        for (v, text) in [
+            (184.0, "184.0"),
+            (0.5175000000000001, "0.5175"),
+            (8.030000000000001, "8.03"),
+            (1e-10, "1E-10"),
+            (-2.5, "-2.5"),
+            (123456789012.0, "1.234568E11"),
+            (1e20, "1E20"),
+        ] {
+            assert_eq!(number(v), text, "{v:?}");
+        }
+        for v in [
+            0.1 + 0.2,
+            std::f64::consts::PI,
+            -std::f64::consts::E * 1e-7,
+            2.19456 / 0.3048,
+            -123456.789012,
+            -1.2345678901e-9,
+            9.87654321012e9,
+        ] {
+            let s = number(v);
+            let back: f64 = s.parse().expect("reads as a number");
+            assert!(s.len() <= NUMBER_CHARACTERS, "{s}");
+            assert!((back - v).abs() <= ROUNDING * v.abs(), "{v:?} written {s}");
+        }
+        // Exact wherever 11 characters hold the value.
+        for v in [0.3048, 12.5, -1234.5678, 3.0e-8] {
+            assert_eq!(number(v).parse::<f64>(), Ok(v));
+        }
+    }
 }
