@@ -1290,10 +1290,17 @@ fn compute_case(case: &Case) -> CaseResults {
                 .filter(|(part, present)| *present && *part != LOW_ASPECT_RATIO)
                 .map(|(part, _)| *part)
                 .collect();
-            match parts
-                .iter()
-                .find(|(part, present)| *present && page_name(case, part) == configuration)
-            {
+            // Page names differ from the parts' constants only with fins besides the
+            // vertical tail (`page_name`): compared without building them otherwise.
+            let renamed = vf || twin;
+            match parts.iter().find(|(part, present)| {
+                *present
+                    && if renamed {
+                        page_name(case, part) == configuration
+                    } else {
+                        *part == configuration
+                    }
+            }) {
                 Some((part, _)) => vec![*part],
                 None => {
                     let within = |a: &str, b: &str| {

@@ -667,6 +667,9 @@ impl<'a> Reader<'a> {
                 _ => None,
             })
             .collect();
+        if long.is_empty() {
+            return;
+        }
         // The namelist: the open one, or the one this line opens.
         let name = self.open.as_ref().map(|o| o.name.to_string()).or_else(|| {
             self.body.iter().find_map(|t| match &t.tok {
