@@ -83,7 +83,8 @@ struct Rules {
     #[arg(long = "six-a", value_enum, default_value = "naca")]
     six_a: SixARule,
     /// The wing's zero-lift angle: DATCOM 4.1.3.1 (default), or as the original program reads
-    /// it (the section's zero-lift angle at the last Mach number, its reading of figure
+    /// it (the section's zero-lift angle at the last Mach number, and its maximum lift there
+    /// for the wing at Mach 0, its reading of figure
     /// 4.1.3.1-4, and the rate derivatives' zero lift read on the whole lift curve, also where
     /// it falls through zero beyond the stall; to reproduce its listings; docs/wing.md,
     /// docs/differences.md).

@@ -755,3 +755,38 @@ fn numbers_the_original_cannot_read_are_reported() {
         long[0]
     );
 }
+
+/// With RNNUB varying with the Mach number, the original's wing at Mach 0 (the reference lift
+/// of the wing's CYB at every angle and the angles of the downwash) takes the zero-lift angle
+/// and maximum lift its section method left after the last Mach number; ours took the first's.
+/// The wing-alone CYB fell off above 12° (the JSBSim P-51 deck: 19 of 20 rows at every Mach
+/// number; its α̇ derivatives and downwash gradient too). Reference: a build of the original's
+/// public source (gfortran, outside this repository) on this deck.
+#[test]
+fn the_mach_zero_wing_takes_the_last_mach_numbers_section_under_the_original_rules() {
+    let deck = read(
+        "BUILD\n $FLTCON NMACH=3.0, MACH(1)=0.15,0.3,0.5,\n   RNNUB(1)=1.0E6,2.0E6,3.4E6,\n   \
+         NALPHA=7.0, ALSCHD(1)=-4.0,0.0,4.0,8.0,12.0,14.0,16.0,\n   \
+         NALT=3.0, ALT(1)=0.0,0.0,0.0, LOOP=1.0$\n \
+         $OPTINS SREF=200.0, CBARR=6.0, BLREF=34.0$\n \
+         $SYNTHS XCG=8.0, ZCG=-1.0, XW=6.0, ZW=-2.0, ALIW=1.0,\n   XH=22.0, ZH=1.0, ALIH=1.0$\n \
+         $BODY NX=5.0, X(1)=0.0,2.0,8.0,20.0,26.0, R(1)=0.2,2.0,2.8,2.8,0.4$\n\
+         NACA-W-4-2415\n \
+         $WGPLNF CHRDTP=3.6, SSPNE=14.5, SSPN=17.0, CHRDR=8.0, SAVSI=0.0,\n   \
+         DHDADI=5.0, TYPE=1.0, TWISTA=-2.0$\n\
+         NACA-H-4-0012\n \
+         $HTPLNF CHRDTP=2.4, SSPNE=5.2, SSPN=6.0, CHRDR=4.2, SAVSI=0.0, TYPE=1.0$\n",
+    )
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    // The first Mach number's wing-alone page (per degree in the listing, ours per radian).
+    let wing = page(&r, "WING ALONE CONFIGURATION");
+    for (k, printed) in [
+        -5.009e-4, -5.009e-4, -4.963e-4, -4.917e-4, -4.769e-4, -4.640e-4, -4.550e-4,
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        agrees(wing.cyb[k].map(f64::to_radians), printed, 1e-7);
+    }
+}

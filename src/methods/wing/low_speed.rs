@@ -2,7 +2,7 @@
 //! force and the angle scale of the downwash.
 
 use super::{computed_wing_section, wing_alone_parts, Parts, WingAlone, WingMethodError};
-use crate::case::Case;
+use crate::case::{Case, ZeroLiftReading};
 use crate::deck::cards::Surface;
 use crate::methods::body::subsonic_limit;
 
@@ -81,7 +81,23 @@ pub fn mach_zero_wing(
     low.mach_index = 0;
     proxy.conditions = vec![low];
     let computed = computed_wing_section(case).transpose()?.map(|mut c| {
+        // Under the original's rule the Mach-0 wing takes the zero-lift angle and the
+        // maximum lift its section method left after the last Mach number (the zero-lift
+        // angle as every condition does: `section_inputs`; CLMAXL as CLMCH0 finds it).
+        // They differ from the first Mach number's when RNNUB varies with it.
+        let last = case
+            .conditions
+            .iter()
+            .zip(&c.per_mach)
+            .max_by_key(|(k, _)| k.mach_index)
+            .map(|(_, m)| (m.zero_lift_alpha_deg, m.max_cl));
         c.per_mach.truncate(1);
+        if case.zero_lift == ZeroLiftReading::Original {
+            if let (Some((zero_lift, max_cl)), Some(first)) = (last, c.per_mach.first_mut()) {
+                first.zero_lift_alpha_deg = zero_lift.or(first.zero_lift_alpha_deg);
+                first.max_cl = max_cl.or(first.max_cl);
+            }
+        }
         c
     });
     let wing = wing_alone_parts(&proxy, 0, alpha_deg, computed.as_ref(), Parts::Lift)?;

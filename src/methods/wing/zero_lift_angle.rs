@@ -17,7 +17,8 @@ pub enum ZeroLiftReading {
     Handbook,
     /// As the original program (SECO, CALCA0): the section's zero-lift angle as its section
     /// method left it after the last Mach number it computed (for every Mach number of the
-    /// case), figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does and applied only to
+    /// case, and, with the section's maximum lift from there, for the wing at Mach 0: CLMCH0),
+    /// figure 4.1.3.1-4 read as [`twist_term_as_the_original`] does and applied only to
     /// a twist of 0.5° or more; the rate
     /// derivatives read zero lift on the whole lift curve (SUBRYW), where a curve that falls
     /// through zero beyond the stall gives that crossing. For reproducing old listings
