@@ -790,3 +790,42 @@ fn the_mach_zero_wing_takes_the_last_mach_numbers_section_under_the_original_rul
         agrees(wing.cyb[k].map(f64::to_radians), printed, 1e-7);
     }
 }
+
+/// A triangular wing with a horizontal tail: the wing-body's α̇ derivatives (one value for the
+/// linear range, printed once on its page) are held at every angle of the configuration's sum
+/// as the original holds them; ours had the configuration's CLAD and CMAD on the first row
+/// only (lkampoli ex4 with DAMP). Reference: a build of the original's public source
+/// (gfortran, outside this repository) on this deck.
+#[test]
+fn a_triangular_wings_alpha_dot_terms_count_at_every_angle() {
+    let deck = read(
+        "DAMP\n $FLTCON NMACH=1.0, MACH(1)=0.5, NALPHA=4.0, ALSCHD(1)=0.0,4.0,8.0,12.0,\n   \
+         RNNUB(1)=2.5E6$\n $OPTINS SREF=500.0, CBARR=16.0, BLREF=40.0$\n \
+         $SYNTHS XCG=30.0, ZCG=0.0, XW=10.0, ZW=0.0, ALIW=0.0,\n   XH=26.0, ZH=0.0, ALIH=0.0$\n \
+         $BODY NX=5.0, X(1)=0.0,10.0,30.0,45.0,50.0, R(1)=0.0,1.6,2.0,1.8,0.5$\n\
+         NACA-W-6-65A004\nNACA-H-6-65A004\n \
+         $WGPLNF CHRDTP=0.0, SSPNE=5.4, SSPN=7.2, CHRDR=12.5, SAVSI=55.0,\n   \
+         CHSTAT=0.0, TYPE=1.0$\n \
+         $HTPLNF CHRDTP=0.0, SSPNE=4.0, SSPN=5.5, CHRDR=7.0, SAVSI=50.0,\n   \
+         CHSTAT=0.0, TYPE=1.0$\n",
+    )
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    let d = r.cases[0].conditions[0]
+        .dynamic
+        .as_ref()
+        .expect("DAMP gives a dynamic block");
+    // Per degree in the listing; ours per radian.
+    for (k, (clad, cmad)) in [
+        (1.128e-3, 7.765e-4),
+        (1.127e-3, 7.766e-4),
+        (1.117e-3, 7.769e-4),
+        (1.097e-3, 7.776e-4),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        agrees(d.clad[k].map(f64::to_radians), clad, 1e-6);
+        agrees(d.cmad[k].map(f64::to_radians), cmad, 1e-7);
+    }
+}

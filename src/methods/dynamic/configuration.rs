@@ -162,6 +162,18 @@ pub fn wing_body_tail_dynamic(
     let with_tail = configuration != TailConfiguration::WingBodyVerticalTail;
     let with_fins = configuration != TailConfiguration::WingBodyHorizontalTail;
     let mut parts = vec![("wing-body", wing_body.clone())];
+    // The wing-body's α̇ derivatives by the triangular-wing method are one value for the
+    // linear range: its page prints it once, and the configuration holds it at every angle,
+    // as the original sums it (lkampoli ex4 with DAMP: every row of CLAD agrees).
+    let wb = &mut parts[0].1;
+    for column in [&mut wb.clad, &mut wb.cmad] {
+        if let Column::Rows(rows) = column {
+            if rows.len() > 1 && rows[1..].iter().all(Option::is_none) {
+                let first = rows[0];
+                rows.iter_mut().for_each(|v| *v = first);
+            }
+        }
+    }
     if with_tail {
         let mut ht = Dynamic::no_method(alpha);
         pitch_increments(case, wing_body, totals, &mut ht)?;
