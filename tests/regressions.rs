@@ -829,3 +829,42 @@ fn a_triangular_wings_alpha_dot_terms_count_at_every_angle() {
         agrees(d.cmad[k].map(f64::to_radians), cmad, 1e-7);
     }
 }
+
+/// Twin vertical panels with a vertical tail: the original's vertical-tail CYβ holds the
+/// panels' side force, and its roll and yaw rate derivatives take it so (at the vertical
+/// tail's arms); ours took the vertical tail's alone (shadowmaster: CNR, CLR, CYP, CNP 40 of
+/// 60 each). Reference: a build of the original's public source (gfortran, outside this
+/// repository) on this deck.
+#[test]
+fn twin_panels_count_in_the_rate_derivatives() {
+    let deck = read(&format!(
+        "DAMP\n{}",
+        TWIN_PANELS_DECK
+            .replace(
+                " $TVTPAN",
+                "NACA-V-4-0010\n $VTPLNF CHRDR=1.2, CHRDTP=0.7, SSPN=1.4, SSPNE=1.0, SAVSI=25.0, \
+             TYPE=1.0$\n $TVTPAN"
+            )
+            .replace("ALIH=-1.0$", "ALIH=-1.0, XV=3.0, ZV=0.4$")
+    ))
+    .with_original_rules();
+    let r = datcom::run(&deck);
+    let d = r.cases[0].conditions[0]
+        .dynamic
+        .as_ref()
+        .expect("DAMP gives a dynamic block");
+    // Per degree in the listing; ours per radian.
+    for (k, (cnr, clr, cyp)) in [
+        (-1.727e-3, 8.377e-4, -1.737e-4),
+        (-1.782e-3, 1.301e-3, -1.747e-5),
+        (-1.852e-3, 1.792e-3, 1.401e-4),
+        (-1.937e-3, 2.307e-3, 2.989e-4),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        agrees(d.cnr[k].map(f64::to_radians), cnr, 1e-6);
+        agrees(d.clr[k].map(f64::to_radians), clr, 1e-7);
+        agrees(d.cyp[k].map(f64::to_radians), cyp, 1e-7);
+    }
+}

@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use super::{finite, Column, Dynamic, DynamicError, DynamicWarning};
 use crate::case::Case;
-use crate::methods::lateral::{fin_lateral, ventral_fin_left_out, Fin};
+use crate::methods::lateral::{fin_lateral, twin_panel_lateral, ventral_fin_left_out, Fin};
 use crate::methods::tail::{tail_position, ConfigurationTotals};
 use crate::methods::wing::WingType;
 use crate::methods::wing_body::WingBody;
@@ -85,7 +85,21 @@ pub fn fin_dynamic(
             reason: "no lateral reference length: give BLREF in $OPTINS".into(),
         }
     })?;
-    let cyb = lateral.cyb.first().copied().flatten();
+    let mut cyb = lateral.cyb.first().copied().flatten();
+    // The original's vertical tail CYβ holds the twin panels' side force (SUBLAT adds it up to
+    // STMACH), and its rate derivatives take it so, at the vertical tail's arms.
+    let mach = case.conditions.get(condition_index).map(|c| c.mach);
+    if fin == Fin::VerticalTail
+        && case.twin_panels.is_some()
+        && mach.is_some_and(|m| m <= crate::methods::body::subsonic_limit(case))
+    {
+        let twin = twin_panel_lateral(case, alpha_deg).map_err(|e| DynamicError::Geometry {
+            reason: e.to_string(),
+        })?;
+        cyb = cyb
+            .zip(twin.cyb.first().copied().flatten())
+            .map(|(v, t)| v + t);
+    }
     let (l, z) = (terms.arm_x, terms.arm_z);
     let mut out = Dynamic::no_method(alpha_deg);
     let each = |f: &dyn Fn(f64, f64, f64) -> f64| {
