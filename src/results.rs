@@ -259,6 +259,10 @@ pub struct CaseResults {
     pub sections: Vec<SectionResult>,
     pub conditions: Vec<ConditionResults>,
     pub warnings: Vec<String>,
+    /// The case's whole configuration as the original names it. No page has this name when
+    /// the build-up has no page for the combination (a wing and tails without a body, ...):
+    /// the pages of its largest parts are given instead, none of them the whole aircraft.
+    pub configuration: String,
 }
 
 impl ConditionResults {
@@ -288,8 +292,9 @@ impl ConditionResults {
 }
 
 impl CaseResults {
-    /// For each flight condition, its last configuration entry: the case's most complete
-    /// configuration (with BUILD the component configurations come first), in condition order.
+    /// For each flight condition, its last configuration entry when it is the case's whole
+    /// configuration (with BUILD the component configurations come first), in condition
+    /// order; none when the build-up has no page for the combination ([`Self::configuration`]).
     pub fn most_complete(&self) -> Vec<&ConditionResults> {
         let mut last: Vec<&ConditionResults> = Vec::new();
         let key = |x: &ConditionResults| (x.condition.mach_index, x.condition.altitude_index);
@@ -299,6 +304,7 @@ impl CaseResults {
                 _ => last.push(c),
             }
         }
+        last.retain(|c| c.configuration == self.configuration);
         last
     }
 }
@@ -924,6 +930,18 @@ fn dynamic_derivatives(
                 // as the original.
                 let mut d = if part == VERTICAL_TAIL && case.vertical_tail.is_none() {
                     Dynamic::no_method(alpha_deg)
+                } else if part == VENTRAL_FIN && crate::methods::lateral::ventral_fin_left_out(case)
+                {
+                    // Without a horizontal tail the fin's terms are left out (0, as the
+                    // original prints them), as from the configuration's.
+                    let mut d = Dynamic::no_method(alpha_deg);
+                    for column in [
+                        &mut d.clp, &mut d.cyp, &mut d.cnp, &mut d.cnr, &mut d.clr, &mut d.cyr,
+                    ] {
+                        *column = dy::Column::rows(vec![Some(0.0); n]);
+                    }
+                    d.warnings.push(dy::DynamicWarning::VentralFinLeftOut);
+                    d
                 } else {
                     dy::fin_dynamic(case, index, alpha_deg, fin).map_err(|e| e.to_string())?
                 };
@@ -1464,6 +1482,7 @@ fn compute_case(case: &Case) -> CaseResults {
         sections,
         conditions,
         warnings,
+        configuration: configuration_name(case),
     }
 }
 

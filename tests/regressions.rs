@@ -422,15 +422,9 @@ fn page<'r>(
         .static_coefficients
 }
 
-/// A finned rocket: wing, vertical tail and ventral fin, no horizontal tail (a corpus deck of
-/// this kind, OpenPost's, had no numbers at all). Its page was never computed, its empty page
-/// said "the warnings say why" with no warning, the ventral fin's sideslip terms failed for
-/// want of a horizontal tail, and a fin without a section had no drag. Reference: what a build
-/// of the original's public source (gfortran, outside this repository) prints for this deck.
-#[test]
-fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
-    let deck = read(
-        " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
+/// A finned rocket without a horizontal tail (wing, body, vertical tail, ventral fin).
+fn finned_rocket_deck() -> &'static str {
+    " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
          NALPHA=5.0, ALSCHD(1)=0.0,2.0,4.0,6.0,8.0$\n \
          $OPTINS SREF=0.8, CBARR=10.0, BLREF=1.2$\n \
          $SYNTHS XCG=6.0, ZCG=0.0, XW=9.0, ZW=0.0, ALIW=0.0, XV=9.0, ZV=0.0,\n   \
@@ -440,9 +434,17 @@ fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
          $WGPLNF CHRDR=1.8, CHRDTP=0.9, SSPN=1.6, SSPNE=1.1, SAVSI=40.0, TYPE=1.0$\n\
          NACA-V-4-0008\n \
          $VTPLNF CHRDR=1.8, CHRDTP=0.9, SSPN=1.6, SSPNE=1.1, SAVSI=40.0, TYPE=1.0$\n \
-         $VFPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=0.7, SAVSI=30.0, TYPE=1.0$\nDAMP\n",
-    )
-    .with_original_rules();
+         $VFPLNF CHRDR=1.0, CHRDTP=0.6, SSPN=1.2, SSPNE=0.7, SAVSI=30.0, TYPE=1.0$\nDAMP\n"
+}
+
+/// A finned rocket: wing, vertical tail and ventral fin, no horizontal tail (a corpus deck of
+/// this kind, OpenPost's, had no numbers at all). Its page was never computed, its empty page
+/// said "the warnings say why" with no warning, the ventral fin's sideslip terms failed for
+/// want of a horizontal tail, and a fin without a section had no drag. Reference: what a build
+/// of the original's public source (gfortran, outside this repository) prints for this deck.
+#[test]
+fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
+    let deck = read(finned_rocket_deck()).with_original_rules();
     let r = datcom::run(&deck);
     let case = &r.cases[0];
     assert_eq!(
@@ -468,6 +470,24 @@ fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
         .expect("DAMP gives a dynamic block");
     agrees(per_deg(d.cnr[0]), -2.845, 1e-3);
     agrees(per_deg(d.clr[0]), 0.5126, 1e-4);
+    // With BUILD the fin's own page: its rate terms are left out (0), not an error.
+    let built =
+        datcom::run(&read(&format!("BUILD\n{}", finned_rocket_deck())).with_original_rules());
+    let fin = built.cases[0]
+        .conditions
+        .iter()
+        .find(|c| c.configuration == "VENTRAL FIN CONFIGURATION")
+        .and_then(|c| c.dynamic.as_ref())
+        .expect("the ventral fin's page with DAMP");
+    assert!(fin.cnr.iter().all(|v| *v == Some(0.0)), "{:?}", fin.cnr);
+    assert!(
+        !built.cases[0]
+            .warnings
+            .iter()
+            .any(|w| w.contains("incomplete input")),
+        "{:#?}",
+        built.cases[0].warnings
+    );
     for said in [
         "the ventral fin's sideslip and roll and yaw rate terms are left out",
         "VENTRAL FIN: no section (NACA card, coordinates or TOVC): its zero-lift drag is skin friction only",
@@ -729,6 +749,9 @@ fn a_combination_without_its_own_page_gives_its_largest_parts() {
         "{:#?}",
         case.warnings
     );
+    // No page is the whole aircraft: nothing to export or predict from.
+    assert!(case.most_complete().is_empty());
+    assert_eq!(case.configuration, "WING-HORIZONTAL TAIL CONFIGURATION");
 }
 
 /// A number longer than the original reads (11 characters) was read silently: a build of the

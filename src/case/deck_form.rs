@@ -330,7 +330,8 @@ impl Case {
     /// [`crate::deck::writer::write_case`] it is a deck for the original program; read back
     /// ([`Case::from_raw`]) it is this case again, up to the rounding of the unit conversion
     /// (and, as text, of a value that needs more than the 11 characters the original reads:
-    /// the writer rounds it to 6 significant digits or more).
+    /// the writer rounds it to 6 significant digits or more for magnitudes from 1e-9 to
+    /// 1e10).
     /// A case built in code is checked as a deck is with [`Case::diagnose`].
     pub fn to_raw(&self) -> RawCase {
         let scale = Some(self.scale)

@@ -658,26 +658,24 @@ impl<'a> Reader<'a> {
     /// A warning for each number of the body from token `from` on that the original cannot
     /// read ([`NUMBER_CHARACTERS`]).
     fn long_numbers(&mut self, from: usize) {
-        let long: Vec<(usize, usize, String)> = self.body[from..]
-            .iter()
-            .filter_map(|t| match t.tok {
-                lexer::Tok::Number { text, .. } if text.len() > NUMBER_CHARACTERS => {
-                    Some((t.line, t.column, text.to_string()))
-                }
-                _ => None,
-            })
-            .collect();
-        if long.is_empty() {
+        if !self.body[from..].iter().any(
+            |t| matches!(t.tok, lexer::Tok::Number { text, .. } if text.len() > NUMBER_CHARACTERS),
+        ) {
             return;
         }
-        // The namelist: the open one, or the one this line opens.
-        let name = self.open.as_ref().map(|o| o.name.to_string()).or_else(|| {
-            self.body.iter().find_map(|t| match &t.tok {
-                lexer::Tok::Open(name) => Some(name.to_string()),
-                _ => None,
-            })
-        });
-        for (line, column, text) in long {
+        // Each number's namelist: the open one, or the last one opened before it on the line.
+        let mut name = self.open.as_ref().map(|o| o.name.to_string());
+        let mut long: Vec<(usize, usize, String, Option<String>)> = Vec::new();
+        for t in &self.body[from..] {
+            match &t.tok {
+                lexer::Tok::Open(n) => name = Some(n.to_string()),
+                lexer::Tok::Number { text, .. } if text.len() > NUMBER_CHARACTERS => {
+                    long.push((t.line, t.column, text.to_string(), name.clone()));
+                }
+                _ => {}
+            }
+        }
+        for (line, column, text, name) in long {
             self.diags.push(
                 Severity::Warning,
                 (line, column),

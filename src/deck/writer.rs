@@ -16,10 +16,11 @@ pub fn number(v: f64) -> String {
     if exact.len() <= NUMBER_CHARACTERS || !v.is_finite() {
         return exact;
     }
+    // A rounding that overflows (|v| near f64::MAX) is not a number: the exact text then.
     (1..=17)
         .rev()
         .map(|digits| with_digits(v, digits))
-        .find(|s| s.len() <= NUMBER_CHARACTERS)
+        .find(|s| s.len() <= NUMBER_CHARACTERS && s.parse::<f64>().is_ok_and(f64::is_finite))
         .unwrap_or(exact)
 }
 
@@ -267,5 +268,7 @@ mod tests {
         for v in [0.3048, 12.5, -1234.5678, 3.0e-8] {
             assert_eq!(number(v).parse::<f64>(), Ok(v));
         }
+        // A rounding that would overflow is not taken.
+        assert_eq!(number(-f64::MAX).parse::<f64>(), Ok(-f64::MAX));
     }
 }

@@ -68,6 +68,14 @@ pub fn from_deck(
             ),
         })?;
     let full = group[group.len() - 1];
+    if full.configuration != results.configuration {
+        return Err(DiscrepancyError::NoPrediction {
+            reason: format!(
+                "case {case}: the build-up has no page for its configuration {} (only the pages of its largest parts)",
+                results.configuration
+            ),
+        });
+    }
     let s = &full.static_coefficients;
     let mut warnings: Vec<String> = Vec::new();
     let mut alpha = Vec::new();

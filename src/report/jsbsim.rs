@@ -36,6 +36,8 @@ pub enum ExportError {
     NoSuchCase { case: usize, count: usize },
     #[error("case {case}: no flight condition was computed (no $FLTCON with Mach numbers and angles of attack)")]
     NoConditions { case: usize },
+    #[error("case {case}: the build-up has no page for its configuration {configuration} (only the pages of its largest parts): nothing to export for the whole aircraft")]
+    NoWholeConfiguration { case: usize, configuration: String },
     #[error("case {case}: the angles of attack {alpha_deg:?} are not strictly increasing, as JSBSim tables need")]
     AlphaNotIncreasing { case: usize, alpha_deg: Vec<f64> },
     #[error("case {case}: nothing to export: the {configuration} has no coefficient with a value (see the warnings of `datcom-rs run`)")]
@@ -373,6 +375,12 @@ pub fn conditions(
 ) -> Result<(Vec<&ConditionResults>, Vec<String>), ExportError> {
     let case = results.number;
     let last = results.most_complete();
+    if last.is_empty() && !results.conditions.is_empty() {
+        return Err(ExportError::NoWholeConfiguration {
+            case,
+            configuration: results.configuration.clone(),
+        });
+    }
     let first_altitude = last
         .iter()
         .map(|c| c.condition.altitude_index)

@@ -472,7 +472,21 @@ fn find_entry<'a>(
         .filter(|e| e.condition.altitude == first.altitude)
         .collect();
     match &reference.configuration {
-        None => Ok(at_condition[at_condition.len() - 1]),
+        // The whole configuration: the last page, when it is the case's own.
+        None => at_condition
+            .last()
+            .copied()
+            .filter(|e| e.configuration == case.configuration)
+            .ok_or_else(|| ReferenceError::NoConfiguration {
+                case: case.number,
+                configuration: case.configuration.clone(),
+                mach: c.mach,
+                available: at_condition
+                    .iter()
+                    .map(|e| e.configuration.as_str())
+                    .collect::<Vec<_>>()
+                    .join("; "),
+            }),
         Some(name) => at_condition
             .iter()
             .copied()

@@ -140,7 +140,7 @@ fn table(case: &CaseResults, c: &ConditionResults) -> String {
             ecell(dv(&st.clb)),
         );
     }
-    let computed = [&st.cd, &st.cl, &st.cm, &st.cla]
+    let computed = [&st.cd, &st.cl, &st.cm, &st.cla, &st.cyb, &st.clb]
         .iter()
         .any(|col| col.iter().any(Option::is_some));
     if !computed {

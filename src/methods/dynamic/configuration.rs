@@ -177,10 +177,17 @@ pub fn wing_body_tail_dynamic(
     let with_fins = configuration != TailConfiguration::WingBodyHorizontalTail;
     let mut parts = vec![("wing-body", wing_body.clone())];
     // The wing-body's α̇ derivatives by the triangular-wing method are one value for the
-    // linear range: its page prints it once, and the configuration holds it at every angle,
-    // as the original sums it (lkampoli ex4 with DAMP: every row of CLAD agrees).
+    // linear range: its page prints it once, and a configuration with the horizontal tail
+    // (whose downwash-lag term varies with angle) holds it at every angle, as the original
+    // sums it (lkampoli ex4 with DAMP: every row of CLAD agrees); without the tail the
+    // original prints it once, as the wing-body's.
     let wb = &mut parts[0].1;
-    for column in [&mut wb.clad, &mut wb.cmad] {
+    let held = if with_tail {
+        vec![&mut wb.clad, &mut wb.cmad]
+    } else {
+        Vec::new()
+    };
+    for column in held {
         if let Column::Rows(rows) = column {
             if rows.len() > 1 && rows[1..].iter().all(Option::is_none) {
                 let first = rows[0];

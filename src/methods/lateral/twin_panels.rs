@@ -45,7 +45,7 @@ pub struct TwinPanelLateralTerms {
 /// - CYβ = −K·CLα_p·2 SV/S, K of figure 5.3.1.1-24c (BH/l_B, BDV/BV), l_B the body length;
 /// - Cnβ = −CYβ·VLP/b; Clβ(α) = CYβ (ZP cos α − VLP sin α)/b.
 ///
-/// Subsonic only (the caller leaves the panels out above Mach 1, as the original). VPHITE not
+/// Subsonic only (the caller leaves the panels out above STMACH, as the original). VPHITE not
 /// given is 0°, with a warning. Errors: no $TVTPAN, another variable of it missing, no body (its length), no reference area or lateral
 /// reference length, charts.
 pub fn twin_panel_lateral(case: &Case, alpha_deg: &[f64]) -> Result<Lateral, LateralError> {

@@ -85,15 +85,24 @@ pub fn mach_zero_wing(
         // maximum lift its section method left after the last Mach number (the zero-lift
         // angle as every condition does: `section_inputs`; CLMAXL as CLMCH0 finds it).
         // They differ from the first Mach number's when RNNUB varies with it.
-        let last = case
-            .conditions
-            .iter()
-            .zip(&c.per_mach)
-            .max_by_key(|(k, _)| k.mach_index)
-            .map(|(_, m)| (m.zero_lift_alpha_deg, m.max_cl));
+        // The last Mach number's value of each, among those the section method gave (as
+        // `section_inputs` reads the zero-lift angle).
+        let at_last_mach =
+            |value: fn(&crate::methods::section::MachCharacteristics) -> Option<f64>| {
+                case.conditions
+                    .iter()
+                    .zip(&c.per_mach)
+                    .filter_map(|(k, m)| value(m).map(|v| (k.mach_index, v)))
+                    .max_by_key(|(i, _)| *i)
+                    .map(|(_, v)| v)
+            };
+        let (zero_lift, max_cl) = (
+            at_last_mach(|m| m.zero_lift_alpha_deg),
+            at_last_mach(|m| m.max_cl),
+        );
         c.per_mach.truncate(1);
         if case.zero_lift == ZeroLiftReading::Original {
-            if let (Some((zero_lift, max_cl)), Some(first)) = (last, c.per_mach.first_mut()) {
+            if let Some(first) = c.per_mach.first_mut() {
                 first.zero_lift_alpha_deg = zero_lift.or(first.zero_lift_alpha_deg);
                 first.max_cl = max_cl.or(first.max_cl);
             }
