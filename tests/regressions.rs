@@ -891,3 +891,30 @@ fn twin_panels_count_in_the_rate_derivatives() {
         agrees(d.cyp[k].map(f64::to_radians), cyp, 1e-7);
     }
 }
+
+/// A swept wing's Cnβ divides the centre of pressure by CBARR once more, as the original does,
+/// in the original's working length unit: metres for DIM M, feet for DIM FT, IN and CM (it
+/// converts inches and centimetres to feet). Ours took CBARR in the deck's unit, so decks in
+/// inches or centimetres were off (easystar's CNB 1 %, a swept wing in CM 2 %). Reference: a
+/// build of the original's public source (gfortran, outside this repository) on this deck.
+#[test]
+fn a_swept_wings_cnb_takes_cbarr_in_the_originals_working_unit() {
+    for (dim, printed) in [
+        ("CM", [0.0, 5.057e-5, 2.169e-4, 5.096e-4]),
+        ("IN", [0.0, 5.003e-5, 2.146e-4, 5.042e-4]),
+    ] {
+        let deck = read(&format!(
+            "DIM {dim}\n $FLTCON NMACH=1.0, MACH(1)=0.2, NALPHA=4.0, ALSCHD(1)=0.0,4.0,8.0,12.0,\n   \
+             NALT=1.0, ALT(1)=0.0$\n $OPTINS SREF=200.0, CBARR=6.0, BLREF=34.0$\n \
+             $SYNTHS XCG=8.0, ZCG=0.0, XW=2.0, ZW=0.0, ALIW=0.0$\nNACA-W-4-0012\n \
+             $WGPLNF CHRDTP=4.0, SSPNE=17.0, SSPN=17.0, CHRDR=8.0, SAVSI=30.0,\n   \
+             CHSTAT=0.25, TYPE=1.0$\n"
+        ))
+        .with_original_rules();
+        let r = datcom::run(&deck);
+        let s = page(&r, "WING ALONE CONFIGURATION");
+        for (k, cnb) in printed.into_iter().enumerate() {
+            agrees(s.cnb[k].map(f64::to_radians), cnb, 1e-8);
+        }
+    }
+}
