@@ -893,15 +893,16 @@ fn twin_panels_count_in_the_rate_derivatives() {
 }
 
 /// A swept wing's Cnβ divides the centre of pressure by CBARR once more, as the original does,
-/// in the original's working length unit: metres for DIM M, feet for DIM FT, IN and CM (it
-/// converts inches and centimetres to feet). Ours took CBARR in the deck's unit, so decks in
-/// inches or centimetres were off (easystar's CNB 1 %, a swept wing in CM 2 %). Reference: a
+/// in feet, its working length unit, whatever the deck's DIM. Ours took CBARR in the deck's
+/// unit, so decks in inches, metres or centimetres were off (easystar's CNB 1 %, a swept wing
+/// in CM 2 %). Reference: a
 /// build of the original's public source (gfortran, outside this repository) on this deck.
 #[test]
 fn a_swept_wings_cnb_takes_cbarr_in_the_originals_working_unit() {
     for (dim, printed) in [
         ("CM", [0.0, 5.057e-5, 2.169e-4, 5.096e-4]),
         ("IN", [0.0, 5.003e-5, 2.146e-4, 5.042e-4]),
+        ("M", [0.0, 4.970e-5, 2.131e-4, 5.007e-4]),
     ] {
         let deck = read(&format!(
             "DIM {dim}\n $FLTCON NMACH=1.0, MACH(1)=0.2, NALPHA=4.0, ALSCHD(1)=0.0,4.0,8.0,12.0,\n   \

@@ -271,7 +271,7 @@ pub(super) fn panel_sweep_and_aspect_roll(
 ///   8cos²Λ) · [1/(4πA) − |tan Λ|/(πA(A + 4cos Λ))·(cos Λ − A/2 − A²/(8cos Λ) + 6 x̄ |sin Λ|/A)]
 ///   · CL² · b_w S/(b S_exposed) per degree, the DATCOM 5.1.3.1 form with x̄ = (CM/CN)/c̄ (the
 ///   original divides the centre of pressure, already in reference lengths, by c̄ once more, in
-///   its working length unit: metres for DIM M, feet for DIM FT, IN and CM);
+///   feet, its working length unit, whatever the deck's DIM);
 /// - Clβ, straight wings with A ≥ 1 and uniform dihedral (equation b):
 ///   [CL·S/S_w·((Clβ/CL)_Λ K_MΛ + (Clβ/CL)_A) + θ tan Λc/4,i ΔClβ/(θ tan Λc/4) + Γ (Clβ/Γ) K_MΓ]
 ///   · S_w/S · b_w/b; with a dihedral break (SSPNDD) the dihedral term is that of figure
@@ -343,14 +343,10 @@ pub fn wing_lateral(
         .collect();
 
     // Cnβ.
-    // In the original's working unit: metres for DIM M, feet otherwise (it converts DIM IN
-    // and DIM CM to feet). Measured with a build of its source on one deck read as FT, M, IN
-    // and CM: the term follows CBARR in metres for M and in feet for the other three.
-    let working_unit = match case.dim {
-        Dim::M => Dim::M,
-        Dim::Ft | Dim::In | Dim::Cm => Dim::Ft,
-    };
-    let chord_in_deck_units = from_si(wing.reference_length, working_unit, Dimension::Length);
+    // In feet, the original's working unit, whatever the deck's DIM (it converts inches,
+    // metres and centimetres to feet): measured with a build of its source on one deck read
+    // as FT, IN, M and CM, the term follows CBARR in feet.
+    let chord_in_feet = from_si(wing.reference_length, Dim::Ft, Dimension::Length);
     let ab = a * beta_sweep;
     let mach_ratio = (ab * ab + 4.0 * ab * cos_q - 8.0 * cos_q * cos_q)
         / (a * a + 4.0 * a * cos_q - 8.0 * cos_q * cos_q);
@@ -368,7 +364,7 @@ pub fn wing_lateral(
                     let m = wing.terms.pitching_moment.as_ref()?;
                     m.cm.get(k).copied().filter(|v| v.is_finite())
                 })?;
-                6.0 * (cm / cn / chord_in_deck_units) * sin_q.abs() / a
+                6.0 * (cm / cn / chord_in_feet) * sin_q.abs() / a
             };
             let bracket = 1.0 / (4.0 * PI * a)
                 - tan_q.abs() / (PI * a * (a + 4.0 * cos_q))
