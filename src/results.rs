@@ -497,6 +497,8 @@ pub const WING_BODY: &str = "WING-BODY CONFIGURATION";
 pub const WING_BODY_HT: &str = "WING-BODY-HORIZONTAL TAIL CONFIGURATION";
 pub const WING_BODY_VT: &str = "WING-BODY-VERTICAL TAIL CONFIGURATION";
 pub const WING_BODY_VT_HT: &str = "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION";
+/// The configuration of a case without a body, wing, tail, fin or $LARWB.
+pub const NO_COMPONENT: &str = "NO COMPONENT";
 
 /// The vertical tail's sideslip derivatives (DATCOM 5.3.1.1), with the twin vertical panels'
 /// ($TVTPAN, figures 5.3.1.1-24a to -24c) added as the original adds them, up to STMACH; above
@@ -518,12 +520,11 @@ fn vertical_tail_sideslip(
     if case.twin_panels.is_none() {
         return Ok(fin);
     }
-    let mach = case.conditions.get(condition_index).map(|c| c.mach);
-    if mach.is_some_and(|m| m > crate::methods::body::subsonic_limit(case)) {
+    if !lateral::twin_panels_counted(case, condition_index) {
+        let mach = case.conditions.get(condition_index).map_or(0.0, |c| c.mach);
         warnings.push(format!(
-            "Mach {:.3}: the lateral stability derivatives do not include the effects of the twin \
-             vertical panels (no DATCOM method above STMACH)",
-            mach.unwrap_or_default()
+            "Mach {mach:.3}: the lateral stability derivatives do not include the effects of the \
+             twin vertical panels (no DATCOM method above STMACH)"
         ));
         return Ok(fin);
     }
@@ -1124,7 +1125,7 @@ pub fn configuration_name(case: &Case) -> String {
         }
     }
     match parts.as_slice() {
-        [] => "NO COMPONENT".to_string(),
+        [] => NO_COMPONENT.to_string(),
         // The original's name for the body alone.
         ["BODY"] => BODY_ALONE.to_string(),
         ["TWIN VERTICAL PANEL"] => "TWIN VERTICAL PANEL CONFIGURATION".to_string(),
@@ -1256,12 +1257,12 @@ fn compute_case(case: &Case) -> CaseResults {
         .iter()
         .find(|s| s.surface == Surface::Wing)
         .and_then(|s| s.characteristics.as_ref());
+    let configuration = configuration_name(case);
     if let Some(f) = &case.flight {
         let conds = case.conditions.clone();
         warnings.extend(case.condition_warnings.iter().cloned());
         warnings.extend(crate::methods::experimental::unused_variables(case));
         let n = f.alpha_deg.len();
-        let configuration = configuration_name(case);
         // Component configurations: the configuration itself when it is one component, and
         // with BUILD the parts of the build-up the methods so far compute.
         let wb = case.wing.is_some() && case.body.is_some();
@@ -1441,12 +1442,8 @@ fn compute_case(case: &Case) -> CaseResults {
                 conditions.push(entry);
             }
             if !own_computed {
-                // Said once per case (the same for every condition).
-                if index == 0 && configuration != "NO COMPONENT" {
-                    warnings.push(format!(
-                        "{configuration}: no method for this combination of components here: nothing computed"
-                    ));
-                }
+                // Only a case without a component has no page of its own (the deck's check
+                // says so).
                 conditions.push(ConditionResults {
                     condition: c,
                     configuration: configuration.clone(),
@@ -1482,7 +1479,7 @@ fn compute_case(case: &Case) -> CaseResults {
         sections,
         conditions,
         warnings,
-        configuration: configuration_name(case),
+        configuration,
     }
 }
 

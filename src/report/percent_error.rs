@@ -471,40 +471,29 @@ fn find_entry<'a>(
         .copied()
         .filter(|e| e.condition.altitude == first.altitude)
         .collect();
-    match &reference.configuration {
-        // The whole configuration: the last page, when it is the case's own.
-        None => at_condition
-            .last()
-            .copied()
-            .filter(|e| e.configuration == case.configuration)
-            .ok_or_else(|| ReferenceError::NoConfiguration {
+    // The reference's configuration, else the case's whole configuration (none when the
+    // build-up has no page for it).
+    let name = reference
+        .configuration
+        .as_deref()
+        .unwrap_or(&case.configuration);
+    at_condition
+        .iter()
+        .copied()
+        .find(|e| e.configuration.trim() == name.trim())
+        .ok_or_else(|| {
+            let mut names: Vec<&str> = at_condition
+                .iter()
+                .map(|e| e.configuration.as_str())
+                .collect();
+            names.dedup();
+            ReferenceError::NoConfiguration {
                 case: case.number,
-                configuration: case.configuration.clone(),
+                configuration: name.to_string(),
                 mach: c.mach,
-                available: at_condition
-                    .iter()
-                    .map(|e| e.configuration.as_str())
-                    .collect::<Vec<_>>()
-                    .join("; "),
-            }),
-        Some(name) => at_condition
-            .iter()
-            .copied()
-            .find(|e| e.configuration.trim() == name.trim())
-            .ok_or_else(|| {
-                let mut names: Vec<&str> = at_condition
-                    .iter()
-                    .map(|e| e.configuration.as_str())
-                    .collect();
-                names.dedup();
-                ReferenceError::NoConfiguration {
-                    case: case.number,
-                    configuration: name.clone(),
-                    mach: c.mach,
-                    available: names.join("; "),
-                }
-            }),
-    }
+                available: names.join("; "),
+            }
+        })
 }
 
 fn summary(rows: &[Row], family: Option<Family>) -> Summary {

@@ -5,7 +5,9 @@ use serde::Serialize;
 
 use super::{finite, Column, Dynamic, DynamicError, DynamicWarning};
 use crate::case::Case;
-use crate::methods::lateral::{fin_lateral, twin_panel_lateral, ventral_fin_left_out, Fin};
+use crate::methods::lateral::{
+    fin_lateral, twin_panel_lateral, twin_panels_counted, ventral_fin_left_out, Fin,
+};
 use crate::methods::tail::{tail_position, ConfigurationTotals};
 use crate::methods::wing::WingType;
 use crate::methods::wing_body::WingBody;
@@ -88,11 +90,7 @@ pub fn fin_dynamic(
     let mut cyb = lateral.cyb.first().copied().flatten();
     // The original's vertical tail CYβ holds the twin panels' side force (SUBLAT adds it up to
     // STMACH), and its rate derivatives take it so, at the vertical tail's arms.
-    let mach = case.conditions.get(condition_index).map(|c| c.mach);
-    if fin == Fin::VerticalTail
-        && case.twin_panels.is_some()
-        && mach.is_some_and(|m| m <= crate::methods::body::subsonic_limit(case))
-    {
+    if fin == Fin::VerticalTail && twin_panels_counted(case, condition_index) {
         let twin = twin_panel_lateral(case, alpha_deg).map_err(|e| DynamicError::Geometry {
             reason: e.to_string(),
         })?;
@@ -181,17 +179,14 @@ pub fn wing_body_tail_dynamic(
     // (whose downwash-lag term varies with angle) holds it at every angle, as the original
     // sums it (lkampoli ex4 with DAMP: every row of CLAD agrees); without the tail the
     // original prints it once, as the wing-body's.
-    let wb = &mut parts[0].1;
-    let held = if with_tail {
-        vec![&mut wb.clad, &mut wb.cmad]
-    } else {
-        Vec::new()
-    };
-    for column in held {
-        if let Column::Rows(rows) = column {
-            if rows.len() > 1 && rows[1..].iter().all(Option::is_none) {
-                let first = rows[0];
-                rows.iter_mut().for_each(|v| *v = first);
+    if with_tail {
+        let wb = &mut parts[0].1;
+        for column in [&mut wb.clad, &mut wb.cmad] {
+            if let Column::Rows(rows) = column {
+                if rows.len() > 1 && rows[1..].iter().all(Option::is_none) {
+                    let first = rows[0];
+                    rows.fill(first);
+                }
             }
         }
     }

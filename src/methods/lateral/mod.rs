@@ -50,7 +50,7 @@ use crate::methods::wing::WingMethodError;
 use crate::results::planform_area_and_mac;
 
 pub use body::body_lateral;
-pub use twin_panels::{twin_panel_lateral, TwinPanelLateralTerms};
+pub use twin_panels::{twin_panel_lateral, twin_panels_counted, TwinPanelLateralTerms};
 pub use vertical_tail::{fin_lateral, Fin, FinLateralTerms};
 pub use wing::{wing_lateral, DihedralRoll, RollingMomentTerms, WingLateralTerms};
 pub use wing_body::{

@@ -45,9 +45,20 @@ pub struct TwinPanelLateralTerms {
 /// - CYβ = −K·CLα_p·2 SV/S, K of figure 5.3.1.1-24c (BH/l_B, BDV/BV), l_B the body length;
 /// - Cnβ = −CYβ·VLP/b; Clβ(α) = CYβ (ZP cos α − VLP sin α)/b.
 ///
-/// Subsonic only (the caller leaves the panels out above STMACH, as the original). VPHITE not
-/// given is 0°, with a warning. Errors: no $TVTPAN, another variable of it missing, no body (its length), no reference area or lateral
+/// Subsonic only (the caller leaves the panels out above STMACH, as the original:
+/// [`twin_panels_counted`]). VPHITE not given is 0°, with a warning. Errors: no $TVTPAN,
+/// another variable of it missing, no body (its length), no reference area or lateral
 /// reference length, charts.
+/// True when the case's twin vertical panels count at flight condition `condition_index`: the
+/// original adds their terms up to STMACH and leaves them out above it.
+pub fn twin_panels_counted(case: &Case, condition_index: usize) -> bool {
+    case.twin_panels.is_some()
+        && case
+            .conditions
+            .get(condition_index)
+            .is_some_and(|c| c.mach <= crate::methods::body::subsonic_limit(case))
+}
+
 pub fn twin_panel_lateral(case: &Case, alpha_deg: &[f64]) -> Result<Lateral, LateralError> {
     let missing = |what: &str| LateralError::Geometry {
         reason: format!("the twin vertical panels' sideslip terms need {what}"),

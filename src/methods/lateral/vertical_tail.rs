@@ -92,18 +92,14 @@ fn section_slope(case: &Case, surface: Surface, k: usize) -> Result<f64, Lateral
     if let Some(per_deg) = user {
         return Ok(per_deg.to_degrees());
     }
+    let (what, namelist) = match surface {
+        Surface::VentralFin => ("ventral fin", "VFSCHR"),
+        _ => ("vertical tail", "VTSCHR"),
+    };
     let none = || {
         LateralError::Geometry {
         reason: format!(
-            "the {} has no section lift-curve slope (give a NACA card, section coordinates or CLALPA in ${})",
-            match surface {
-                Surface::VentralFin => "ventral fin",
-                _ => "vertical tail",
-            },
-            match surface {
-                Surface::VentralFin => "VFSCHR",
-                _ => "VTSCHR",
-            }
+            "the {what} has no section lift-curve slope (give a NACA card, section coordinates or CLALPA in ${namelist})"
         ),
     }
     };

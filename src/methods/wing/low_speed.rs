@@ -1,6 +1,7 @@
 //! The wing at Mach 0 (the original's CLMCH0): the reference lift of the wing's sideslip side
 //! force and the angle scale of the downwash.
 
+use super::section_inputs::at_last_mach;
 use super::{computed_wing_section, wing_alone_parts, Parts, WingAlone, WingMethodError};
 use crate::case::{Case, ZeroLiftReading};
 use crate::deck::cards::Surface;
@@ -82,24 +83,10 @@ pub fn mach_zero_wing(
     proxy.conditions = vec![low];
     let computed = computed_wing_section(case).transpose()?.map(|mut c| {
         // Under the original's rule the Mach-0 wing takes the zero-lift angle and the
-        // maximum lift its section method left after the last Mach number (the zero-lift
-        // angle as every condition does: `section_inputs`; CLMAXL as CLMCH0 finds it).
-        // They differ from the first Mach number's when RNNUB varies with it.
-        // The last Mach number's value of each, among those the section method gave (as
-        // `section_inputs` reads the zero-lift angle).
-        let at_last_mach =
-            |value: fn(&crate::methods::section::MachCharacteristics) -> Option<f64>| {
-                case.conditions
-                    .iter()
-                    .zip(&c.per_mach)
-                    .filter_map(|(k, m)| value(m).map(|v| (k.mach_index, v)))
-                    .max_by_key(|(i, _)| *i)
-                    .map(|(_, v)| v)
-            };
-        let (zero_lift, max_cl) = (
-            at_last_mach(|m| m.zero_lift_alpha_deg),
-            at_last_mach(|m| m.max_cl),
-        );
+        // maximum lift its section method left after the last Mach number (CLMCH0 after
+        // SECO); they differ from the first Mach number's when RNNUB varies with it.
+        let zero_lift = at_last_mach(case, &c, |m| m.zero_lift_alpha_deg);
+        let max_cl = at_last_mach(case, &c, |m| m.max_cl);
         c.per_mach.truncate(1);
         if case.zero_lift == ZeroLiftReading::Original {
             if let Some(first) = c.per_mach.first_mut() {

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::{WingMethodError, WingWarning};
 use crate::case::{Case, SectionInput};
-use crate::methods::section::SectionCharacteristics;
+use crate::methods::section::{MachCharacteristics, SectionCharacteristics};
 
 /// Section characteristics of the wing at one flight condition.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -66,6 +66,22 @@ fn per_mach(input: Option<&SectionInput>, name: &str, mach_index: usize) -> Opti
         .filter(|v| v.is_finite())
 }
 
+/// A section value as the original's section method leaves it after the last Mach number it
+/// computed (SECO stores it once, after the Mach loop): the last Mach number's among the
+/// conditions whose characteristics give one.
+pub(super) fn at_last_mach(
+    case: &Case,
+    computed: &SectionCharacteristics,
+    value: fn(&MachCharacteristics) -> Option<f64>,
+) -> Option<f64> {
+    case.conditions
+        .iter()
+        .zip(&computed.per_mach)
+        .filter_map(|(k, m)| value(m).map(|v| (k.mach_index, v)))
+        .max_by_key(|(i, _)| *i)
+        .map(|(_, v)| v)
+}
+
 /// The wing section at flight condition `condition_index` of `case`: the user's $WGSCHR
 /// values, else those of `computed` (the section method's characteristics of the case's
 /// wing section, one `per_mach` entry per condition).
@@ -92,19 +108,12 @@ pub fn wing_section(
             mach: condition.mach,
         })?;
     // The original's rule: the zero-lift angle its section method left after the last Mach
-    // number it computed, for every condition (SECO stores it once, after the Mach loop).
-    let at_last_mach = || {
-        let c = computed?;
-        case.conditions
-            .iter()
-            .zip(&c.per_mach)
-            .filter_map(|(k, m)| m.zero_lift_alpha_deg.map(|z| (k.mach_index, z)))
-            .max_by_key(|(i, _)| *i)
-            .map(|(_, z)| z)
-    };
+    // number, for every condition.
     let section_zero_lift = match case.zero_lift {
         ZeroLiftReading::Handbook => computed.map(|c| c.zero_lift_alpha_deg),
-        ZeroLiftReading::Original => at_last_mach().or(computed.map(|c| c.zero_lift_alpha_deg)),
+        ZeroLiftReading::Original => computed
+            .and_then(|c| at_last_mach(case, c, |m| m.zero_lift_alpha_deg))
+            .or(computed.map(|c| c.zero_lift_alpha_deg)),
     };
     let zero_lift_alpha_deg = scalar(user, &["ALPHAO", "ALPHA0"])
         .or(section_zero_lift)
