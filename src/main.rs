@@ -53,6 +53,12 @@ enum ZeroLiftRule {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum ForwardSweepRule {
+    Handbook,
+    Original,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum MaximumRule {
     Greatest,
     LastRise,
@@ -90,8 +96,14 @@ struct Rules {
     /// docs/differences.md).
     #[arg(long = "zero-lift", value_enum, default_value = "handbook")]
     zero_lift: ZeroLiftRule,
+    /// A forward-swept wing's aerodynamic centre where |tan(leading-edge sweep)|/beta exceeds
+    /// 1: the subsonic chart of figure 4.1.4.2-26 (default), or as the original program reads
+    /// it (its supersonic chart; to reproduce its listings; docs/differences.md).
+    #[arg(long = "forward-sweep", value_enum, default_value = "handbook")]
+    forward_sweep: ForwardSweepRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,
-    /// 5-digit and 6A readings, section maximum), whatever the other options say.
+    /// 5-digit and 6A readings, section maximum, zero-lift angle, forward-swept aerodynamic
+    /// centre), whatever the other options say.
     #[arg(long)]
     original: bool,
 }
@@ -99,7 +111,8 @@ struct Rules {
 impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
         use datcom::case::{
-            FiveDigitReading, MaximumReading, SectionReynolds, SixAReading, ZeroLiftReading,
+            FiveDigitReading, ForwardSweepReading, MaximumReading, SectionReynolds, SixAReading,
+            ZeroLiftReading,
         };
         if self.original {
             return deck.with_original_rules();
@@ -123,6 +136,10 @@ impl Rules {
         .with_zero_lift_reading(match self.zero_lift {
             ZeroLiftRule::Handbook => ZeroLiftReading::Handbook,
             ZeroLiftRule::Original => ZeroLiftReading::Original,
+        })
+        .with_forward_sweep_reading(match self.forward_sweep {
+            ForwardSweepRule::Handbook => ForwardSweepReading::Handbook,
+            ForwardSweepRule::Original => ForwardSweepReading::Original,
         })
     }
 }

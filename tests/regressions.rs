@@ -919,3 +919,61 @@ fn a_swept_wings_cnb_takes_cbarr_in_the_originals_working_unit() {
         }
     }
 }
+
+/// A forward-swept wing-body at low aspect ratio (DATCOM example 5's wing swept forward).
+/// Its wing had no aerodynamic centre (the original's FWDXAC was not covered), so the case
+/// printed no coefficients at all.
+fn forward_swept_deck(mach: f64, sweep_deg: f64) -> String {
+    format!(
+        " $FLTCON NMACH=1.0, MACH(1)={mach}, NALPHA=5.0, ALSCHD(1)=-2.0,0.0,4.0,8.0,12.0,\n   \
+         RNNUB(1)=4.26E6$\n $OPTINS SREF=2.25, CBARR=0.822, BLREF=3.0$\n \
+         $SYNTHS XCG=2.6, ZCG=0.0, XW=1.7, ZW=0.0, ALIW=0.0$\n \
+         $BODY NX=10.0, X(1)=0.0,0.175,0.322,0.53,0.85,1.46,2.5,3.43,3.97,4.57,\n   \
+         R(1)=0.0,0.0417,0.0833,0.125,0.1665,0.208,0.208,0.208,0.178,0.138$\n \
+         $WGPLNF CHRDR=1.16, CHRDTP=0.346, SSPN=1.5, SSPNE=1.29, SAVSI={sweep_deg},\n   \
+         CHSTAT=0.25, TWISTA=0.0, DHDADI=0.0, TYPE=1.0$\n \
+         $WGSCHR TOVC=0.06, XOVC=0.4, CLI=0.0, ALPHAI=0.0, CLALPA(1)=0.131,\n   \
+         CLMAX(1)=0.82, CMO=0.0, LERI=0.0025, CLAMO=0.105, CLMAXL=0.8, DELTAY=1.3$\n"
+    )
+}
+
+/// The forward-sweep charts of figure 4.1.4.2-26 (the original's FWDXAC). At Mach 0.2 and
+/// 30° (|tan Λ_LE|/β 0.59) both rules read the subsonic chart in |tan Λ_LE|/β; at Mach 0.6
+/// and 55° (1.79) the original reads its supersonic chart there, which `--original`
+/// reproduces, and the library's default reads the subsonic chart in β/|tan Λ_LE|, which
+/// joins the first at 1 (docs/differences.md). Reference: a build of the original's public
+/// source (gfortran, outside this repository) on these decks.
+#[test]
+fn a_forward_swept_wing_has_an_aerodynamic_centre() {
+    let name = "WING-BODY CONFIGURATION";
+    let low = forward_swept_deck(0.2, -30.0);
+    let high = forward_swept_deck(0.6, -55.0);
+    let cases = [
+        (&low, [-0.1781, 0.0, 0.3607, 0.7344, 0.9910], 8.943e-2),
+        (&high, [-0.1756, 0.0, 0.3602, 0.7531, 1.1710], 8.854e-2),
+    ];
+    for (deck, cm, cma_at_zero) in cases {
+        let r = datcom::run(&read(deck).with_original_rules());
+        let s = page(&r, name);
+        for (k, printed) in cm.into_iter().enumerate() {
+            agrees(s.cm[k], printed, 1e-4);
+        }
+        agrees(s.cma[1].map(f64::to_radians), cma_at_zero, 1e-6);
+    }
+    // The default rules: the same chart below |tan Λ_LE|/β = 1, the subsonic one above.
+    let default_cm = |deck: &str| page(&datcom::run(&read(deck)), name).cm.clone();
+    let original_cm = |deck: &str| {
+        page(&datcom::run(&read(deck).with_original_rules()), name)
+            .cm
+            .clone()
+    };
+    assert_eq!(default_cm(&low), original_cm(&low));
+    let (handbook, original) = (default_cm(&high), original_cm(&high));
+    // The subsonic chart puts the aerodynamic centre further forward here: more pitch-up.
+    assert!(
+        handbook[4]
+            .zip(original[4])
+            .is_some_and(|(h, o)| h > o * 1.05),
+        "{handbook:?} {original:?}"
+    );
+}

@@ -22,7 +22,7 @@ use crate::error::{DeckProblem, Diagnostic, Severity};
 use crate::geometry::planform::{EXPOSED_SPAN_TOLERANCE, RIGHT_ANGLE_DEG};
 use crate::geometry::section::SectionError;
 pub use crate::methods::section::MaximumReading;
-pub use crate::methods::wing::ZeroLiftReading;
+pub use crate::methods::wing::{ForwardSweepReading, ZeroLiftReading};
 
 /// Every value of a case by the [`schema::key`]s of its namelist's and its own name, sorted:
 /// lookups compare integers, not names. Longer names, which no namelist or variable has, are
@@ -502,6 +502,8 @@ pub struct Case {
     pub six_a: SixAReading,
     /// How the wing's zero-lift angle is read (see [`ZeroLiftReading`]).
     pub zero_lift: ZeroLiftReading,
+    /// How a forward-swept wing's aerodynamic centre is read (see [`ForwardSweepReading`]).
+    pub forward_sweep: ForwardSweepReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -580,15 +582,23 @@ impl Deck {
         self.each_case(|c| c.zero_lift = reading)
     }
 
+    /// The same deck with every case reading a forward-swept wing's aerodynamic centre by
+    /// `reading`.
+    pub fn with_forward_sweep_reading(self, reading: ForwardSweepReading) -> Deck {
+        self.each_case(|c| c.forward_sweep = reading)
+    }
+
     /// The same deck with the original program's rules (its section Reynolds number, its
-    /// 5-digit and 6A readings, its search for a section's maximum thickness and camber and
-    /// its reading of the wing's zero-lift angle), to reproduce its listings.
+    /// 5-digit and 6A readings, its search for a section's maximum thickness and camber, its
+    /// reading of the wing's zero-lift angle and of a forward-swept wing's aerodynamic
+    /// centre), to reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
             .with_six_a_reading(SixAReading::Original)
             .with_section_maximum(MaximumReading::LastRise)
             .with_zero_lift_reading(ZeroLiftReading::Original)
+            .with_forward_sweep_reading(ForwardSweepReading::Original)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -972,6 +982,7 @@ impl Case {
             section_maximum,
             six_a,
             zero_lift,
+            forward_sweep,
             cards,
             flight,
             reference,
@@ -1002,6 +1013,7 @@ impl Case {
             section_maximum: *section_maximum,
             six_a: *six_a,
             zero_lift: *zero_lift,
+            forward_sweep: *forward_sweep,
             cards: cards.clone(),
             flight: flight.clone(),
             reference: reference.clone(),
@@ -1069,6 +1081,7 @@ impl Case {
             section_maximum: MaximumReading::default(),
             six_a: SixAReading::default(),
             zero_lift: ZeroLiftReading::default(),
+            forward_sweep: ForwardSweepReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),
@@ -1233,6 +1246,7 @@ impl Case {
             section_maximum: MaximumReading::default(),
             six_a: SixAReading::default(),
             zero_lift: ZeroLiftReading::default(),
+            forward_sweep: ForwardSweepReading::default(),
             cards: Cards::default(),
             flight: None,
             reference: Reference::default(),

@@ -12,7 +12,8 @@ use crate::geometry::{planform as planform_geometry, Span};
 use crate::methods::tail::table::{read as curve, End};
 use crate::methods::tail::HorizontalTailAlone;
 use crate::methods::wing::{
-    aerodynamic_centre, computed_wing_section, wing_section, WingAlone, WingType, WingWarning,
+    aerodynamic_centre, computed_wing_section, wing_section, CentreInputs, WingAlone, WingType,
+    WingWarning,
 };
 
 /// Below this exposed fraction of the semispan the roll and yaw methods apply with a body
@@ -154,11 +155,18 @@ impl Surface<'_> {
                 ),
                 _ => (None, None),
             };
-            aerodynamic_centre(p, w.planform_type, true, None, 1.0, panels, &mut ww).map_err(
-                |e| DynamicError::Geometry {
-                    reason: e.to_string(),
-                },
-            )?
+            let inputs = CentreInputs {
+                planform: p,
+                kind: w.planform_type,
+                low_aspect_ratio: true,
+                section_xac: None,
+                beta: 1.0,
+                panel_slopes: panels,
+                reading: self.case.forward_sweep,
+            };
+            aerodynamic_centre(&inputs, &mut ww).map_err(|e| DynamicError::Geometry {
+                reason: e.to_string(),
+            })?
         };
         wing_warnings(ww, warnings);
         Ok(centre)

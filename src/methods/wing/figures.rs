@@ -44,6 +44,11 @@ pub const PITCHING_MOMENT_MACH_FACTOR: &str = "4.1.4.1-6";
 /// 4.1.4.2-26a/b: aerodynamic centre over root chord (taper, A tan Λ_LE, tan Λ_LE/β or β/tan Λ_LE).
 pub const AERODYNAMIC_CENTRE_SUBSONIC_EDGE: &str = "4.1.4.2-26a";
 pub const AERODYNAMIC_CENTRE_SONIC_EDGE: &str = "4.1.4.2-26b";
+/// The same for forward-swept leading edges (A |tan Λ_LE|, |tan Λ_LE|/β or β/|tan Λ_LE|);
+/// the last as the original reads it (its supersonic table: docs/differences.md).
+pub const FORWARD_AERODYNAMIC_CENTRE_SUBSONIC_EDGE: &str = "4.1.4.2-26a-forward";
+pub const FORWARD_AERODYNAMIC_CENTRE_SONIC_EDGE: &str = "4.1.4.2-26b-forward";
+pub const FORWARD_AERODYNAMIC_CENTRE_AS_ORIGINAL: &str = "4.1.4.2-26-forward-original";
 /// 4.1.4.3: low-aspect-ratio centre of pressure.
 pub const CENTRE_OF_PRESSURE_DELTA_Y: &str = "4.1.4.3-21a";
 pub const CENTRE_OF_PRESSURE_TAPER_FACTOR: &str = "4.1.4.3-21b";
@@ -97,6 +102,9 @@ pub const ALL: &[&str] = &[
     PITCHING_MOMENT_MACH_FACTOR,
     AERODYNAMIC_CENTRE_SUBSONIC_EDGE,
     AERODYNAMIC_CENTRE_SONIC_EDGE,
+    FORWARD_AERODYNAMIC_CENTRE_SUBSONIC_EDGE,
+    FORWARD_AERODYNAMIC_CENTRE_SONIC_EDGE,
+    FORWARD_AERODYNAMIC_CENTRE_AS_ORIGINAL,
     CENTRE_OF_PRESSURE_DELTA_Y,
     CENTRE_OF_PRESSURE_TAPER_FACTOR,
     CENTRE_OF_PRESSURE_AT_MAX_LIFT,

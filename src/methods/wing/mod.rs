@@ -8,9 +8,10 @@
 //! - pitching moment, 4.1.4.1 to 4.1.4.3 (CMALPH), module `pitching_moment`;
 //! - zero-lift drag, 4.1.5.1, and drag due to lift, 4.1.5.2 (CDRAG), module `drag`.
 //!
-//! Planforms: straight tapered (TYPE 1), double delta (TYPE 2) and cranked (TYPE 3). Not
-//! covered: curved planforms (TYPE 4), forward-swept leading edges at low aspect ratio (the
-//! original's FWDXAC), the dashed curves of figure 4.1.3.3-56 (Mach ≥ 0.7 with A < 3),
+//! Planforms: straight tapered (TYPE 1), double delta (TYPE 2) and cranked (TYPE 3), swept
+//! back or forward (a forward-swept leading edge at low aspect ratio reads the forward-sweep
+//! charts of figure 4.1.4.2-26, the original's FWDXAC). Not covered: curved planforms
+//! (TYPE 4), the dashed curves of figure 4.1.3.3-56 (Mach ≥ 0.7 with A < 3),
 //! experimental wing data ($EXPR), Mach numbers above STMACH (transonic and supersonic
 //! methods).
 //!
@@ -67,8 +68,8 @@ pub use lift::{
 };
 pub use low_speed::{mach_zero_wing, MachZeroWing};
 pub use pitching_moment::{
-    aerodynamic_centre, linear_moment_applies, pitching_moment, zero_lift_moment, MomentInputs,
-    NonlinearCentre, PitchingMoment, ZeroLiftMoment,
+    aerodynamic_centre, linear_moment_applies, pitching_moment, zero_lift_moment, CentreInputs,
+    ForwardSweepReading, MomentInputs, NonlinearCentre, PitchingMoment, ZeroLiftMoment,
 };
 pub use planform::{
     Chords, ExtendedOutboard, MaxThicknessStations, PanelTerms, Sweep, WingPlanform,
@@ -142,8 +143,6 @@ pub enum WingMethodError {
     UnknownType { value: f64 },
     #[error("curved planforms (TYPE 4) are not covered")]
     CurvedPlanform,
-    #[error("the aerodynamic centre of a forward-swept low-aspect-ratio planform (the original's FWDXAC) is not covered")]
-    ForwardSweep,
     #[error(
         "no section lift-curve slope at Mach {mach}: give CLALPA in the surface's section namelist ($WGSCHR, $HTSCHR, ...) or a NACA card"
     )]
@@ -556,12 +555,15 @@ pub(crate) fn wing_alone_parts(
         )?;
         let low_ar_centre = class.low_aspect_ratio;
         let xac = aerodynamic_centre(
-            &p,
-            kind,
-            low_ar_centre,
-            section.aerodynamic_centre,
-            beta,
-            (slope.inboard_panel_per_rad, slope.extended_outboard_per_rad),
+            &CentreInputs {
+                planform: &p,
+                kind,
+                low_aspect_ratio: low_ar_centre,
+                section_xac: section.aerodynamic_centre,
+                beta,
+                panel_slopes: (slope.inboard_panel_per_rad, slope.extended_outboard_per_rad),
+                reading: case.forward_sweep,
+            },
             &mut warnings,
         )?;
         let moment = pitching_moment(

@@ -11,6 +11,21 @@ use super::lift::LiftAtAngle;
 use super::planform::WingPlanform;
 use super::{WingMethodError, WingType, WingWarning, NONLINEAR_ASPECT_LIMIT};
 
+/// How the aerodynamic centre of a forward-swept leading edge is read at subsonic speeds
+/// where |tan Λ_LE|/β exceeds 1 (figure 4.1.4.2-26, forward sweep).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ForwardSweepReading {
+    /// The subsonic chart in β/|tan Λ_LE| (it joins the chart in |tan Λ_LE|/β at 1 and the
+    /// supersonic chart at Mach 1).
+    #[default]
+    Handbook,
+    /// As the original program (FWDXAC): its supersonic chart in tan Λ_LE/β read at
+    /// β/|tan Λ_LE|, the subsonic one never read. For reproducing old listings
+    /// (docs/differences.md).
+    Original,
+}
+
 /// Ratio of tan α(CLmax) to tan α at the reference angle of the nonlinear method.
 const REFERENCE_TANGENT_RATIO: f64 = 0.6;
 
@@ -72,10 +87,11 @@ fn trapezoid_aerodynamic_centre(
     taper: f64,
     tan_le: f64,
     beta: f64,
+    reading: ForwardSweepReading,
     warnings: &mut Vec<WingWarning>,
 ) -> Result<f64, WingMethodError> {
     if tan_le < 0.0 {
-        return Err(WingMethodError::ForwardSweep);
+        return forward_swept_aerodynamic_centre(a, taper, tan_le, beta, reading, warnings);
     }
     let subsonic_edge = tan_le / beta;
     if subsonic_edge < 1.0 {
@@ -93,6 +109,48 @@ fn trapezoid_aerodynamic_centre(
     }
 }
 
+/// x_ac/c_r of a trapezoid with a forward-swept leading edge (tan Λ_LE < 0), subsonic:
+/// the forward-sweep charts of figure 4.1.4.2-26 in A |tan Λ_LE| and |tan Λ_LE|/β up to 1,
+/// β/|tan Λ_LE| beyond (the original's FWDXAC; docs/wing.md).
+fn forward_swept_aerodynamic_centre(
+    a: f64,
+    taper: f64,
+    tan_le: f64,
+    beta: f64,
+    reading: ForwardSweepReading,
+    warnings: &mut Vec<WingWarning>,
+) -> Result<f64, WingMethodError> {
+    let tan = tan_le.abs();
+    let edge = tan / beta;
+    if edge <= 1.0 {
+        return figures::read(
+            FORWARD_AERODYNAMIC_CENTRE_SUBSONIC_EDGE,
+            &[taper, a * tan, edge],
+            warnings,
+        );
+    }
+    let chart = match reading {
+        ForwardSweepReading::Handbook => FORWARD_AERODYNAMIC_CENTRE_SONIC_EDGE,
+        ForwardSweepReading::Original => FORWARD_AERODYNAMIC_CENTRE_AS_ORIGINAL,
+    };
+    figures::read(chart, &[taper, a * tan, beta / tan], warnings)
+}
+
+/// Inputs of [`aerodynamic_centre`].
+#[derive(Debug, Clone, Copy)]
+pub struct CentreInputs<'a> {
+    pub planform: &'a WingPlanform,
+    pub kind: WingType,
+    /// The low-aspect-ratio method applies (figure 4.1.4.2-26 for a straight-tapered wing).
+    pub low_aspect_ratio: bool,
+    /// The section's aerodynamic centre over its chord, when known.
+    pub section_xac: Option<f64>,
+    pub beta: f64,
+    /// CLα of the inboard and the extended outboard panel (double-delta and cranked wings).
+    pub panel_slopes: (Option<f64>, Option<f64>),
+    pub reading: ForwardSweepReading,
+}
+
 /// The aerodynamic centre, behind the exposed root's leading edge over the exposed root
 /// chord (DATCOM 4.1.4.2; the original's CMALPH):
 ///
@@ -103,16 +161,21 @@ fn trapezoid_aerodynamic_centre(
 ///   figure-26 values weighted by their CLα S (DATCOM 4.1.4.2 method for non-straight
 ///   planforms).
 ///
-/// Forward-swept leading edges (the original's FWDXAC) are not covered.
+/// A forward-swept leading edge (of the wing or a panel) reads the forward-sweep charts of
+/// figure 4.1.4.2-26 by `reading` (the original's FWDXAC).
 pub fn aerodynamic_centre(
-    p: &WingPlanform,
-    kind: WingType,
-    low_aspect_ratio: bool,
-    section_xac: Option<f64>,
-    beta: f64,
-    panel_slopes: (Option<f64>, Option<f64>),
+    i: &CentreInputs,
     warnings: &mut Vec<WingWarning>,
 ) -> Result<f64, WingMethodError> {
+    let CentreInputs {
+        planform: p,
+        kind,
+        low_aspect_ratio,
+        section_xac,
+        beta,
+        panel_slopes,
+        reading,
+    } = *i;
     let root = p.exposed_root_chord;
     if kind == WingType::Straight {
         if !low_aspect_ratio {
@@ -124,6 +187,7 @@ pub fn aerodynamic_centre(
             p.taper,
             p.leading_edge.tan,
             beta,
+            reading,
             warnings,
         );
     }
@@ -142,10 +206,11 @@ pub fn aerodynamic_centre(
         p.inboard.taper,
         tan_in,
         beta,
+        reading,
         warnings,
     )?;
     let outboard_own =
-        trapezoid_aerodynamic_centre(e.aspect_ratio, e.taper, tan_out, beta, warnings)?;
+        trapezoid_aerodynamic_centre(e.aspect_ratio, e.taper, tan_out, beta, reading, warnings)?;
     // The extended panel's a.c. from the exposed root: its root lies at mid inboard span.
     let half_in = p.inboard.span / 2.0;
     let outboard = outboard_own * e.root_chord / root - half_in * tan_out / root
@@ -325,4 +390,67 @@ pub fn pitching_moment(
         at_reference,
     });
     Ok(Some(out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// How far apart the two sides of |tan Λ_LE|/β = 1 are read (the charts' nodes at 1 hold
+    /// the same values; between the tables a lookup moves linearly over a step this small).
+    const EDGE_STEP: f64 = 1e-9;
+    /// The charts' values are printed to two decimals.
+    const CHART_DIGIT: f64 = 0.01;
+
+    fn centre(a: f64, taper: f64, tan: f64, beta: f64, reading: ForwardSweepReading) -> f64 {
+        let mut w = Vec::new();
+        trapezoid_aerodynamic_centre(a, taper, -tan, beta, reading, &mut w).unwrap()
+    }
+
+    #[test]
+    fn the_forward_sweep_charts_join_where_the_edge_turns_sonic() {
+        let mut largest_jump = 0.0_f64;
+        for taper in [0.0, 0.2, 0.33, 0.5, 1.0] {
+            for a_tan in [1.0, 2.5, 4.0, 6.0] {
+                let tan = 0.8;
+                let a = a_tan / tan;
+                let below = |r| centre(a, taper, tan, tan / (1.0 - EDGE_STEP), r);
+                let above = |r| centre(a, taper, tan, tan / (1.0 + EDGE_STEP), r);
+                let h = ForwardSweepReading::Handbook;
+                assert!(
+                    (below(h) - above(h)).abs() < 1e-6,
+                    "taper {taper}, A tan {a_tan}: {} {}",
+                    below(h),
+                    above(h)
+                );
+                let o = ForwardSweepReading::Original;
+                largest_jump = largest_jump.max((below(o) - above(o)).abs());
+            }
+        }
+        // The original's supersonic table does not join: its reading jumps there.
+        assert!(largest_jump > 2.0 * CHART_DIGIT, "{largest_jump}");
+    }
+
+    #[test]
+    fn a_forward_swept_rectangle_has_its_centre_at_the_mean_chords_quarter() {
+        // Taper 1, incompressible edge 0: the mean chord lies at mid semi-span, its quarter
+        // chord (A |tan Λ|)/4 root chords ahead of the root's quarter chord.
+        let mut w = Vec::new();
+        for a_tan in [1.0, 2.0, 4.0, 6.0] {
+            let tan = 1e-6;
+            let x = forward_swept_aerodynamic_centre(
+                a_tan / tan,
+                1.0,
+                -tan,
+                1.0,
+                ForwardSweepReading::Handbook,
+                &mut w,
+            )
+            .unwrap();
+            assert!(
+                (x - (0.25 - a_tan / 4.0)).abs() <= 2.0 * CHART_DIGIT,
+                "{a_tan}: {x}"
+            );
+        }
+    }
 }
