@@ -1,5 +1,7 @@
 //! One test per fixed bug, named after what broke.
 
+mod common;
+
 use datcom::deck::{self, Value};
 use datcom::{DeckProblem, Diagnosed, Severity};
 
@@ -976,4 +978,43 @@ fn a_forward_swept_wing_has_an_aerodynamic_centre() {
             .is_some_and(|(h, o)| h > o * 1.05),
         "{handbook:?} {original:?}"
     );
+}
+
+/// The JSBSim P-51 with its horizontal tail raised 2.6 ft (ZH 1.06 to 3.661): at −70° the
+/// wing's wake leaves ahead of the tail, and the page has no coefficients at that angle (the
+/// original prints NaN). That one missing lift took CLA and CMA from every angle of the page;
+/// the original's NaN spoils only the slopes read through it (−70° and −30°). Reference: a
+/// build of the original's public source (gfortran, outside this repository) on this deck.
+#[test]
+fn a_missing_value_spoils_only_the_slopes_read_through_it() {
+    let test = "a_missing_value_spoils_only_the_slopes_read_through_it";
+    let Some(dir) = common::shared_dir("corpus/decks", test) else {
+        return;
+    };
+    let path = dir.join("JSBSim-Team__jsbsim__datcom__p51.inp");
+    let Ok(text) = std::fs::read_to_string(&path) else {
+        eprintln!("SKIPPED {test}: {} is absent", path.display());
+        return;
+    };
+    assert!(text.contains("ZH=1.06"), "the deck's tail height changed");
+    let r = datcom::run(&read(&text.replace("ZH=1.06", "ZH=3.661")).with_original_rules());
+    let first = &r.cases[0].conditions[0];
+    assert_eq!(first.alpha_deg[..3], [-70.0, -30.0, -25.0]);
+    let s = &first.static_coefficients;
+    assert_eq!(s.cl[0], None);
+    assert!(r.cases[0]
+        .warnings
+        .iter()
+        .any(|w| w.contains("the wing's wake leaves ahead of the horizontal tail")));
+    // Per radian (DERIV RAD), rows -70, -30 (none), -25, -20, 0, 10.
+    assert_eq!((s.cla[0], s.cla[1]), (None, None));
+    for (k, cla, cma) in [
+        (2, 2.782, -0.9182),
+        (3, 2.915, -1.500),
+        (9, 5.253, -0.1157),
+        (11, 4.868, 0.09308),
+    ] {
+        agrees(s.cla[k], cla, 1e-3);
+        agrees(s.cma[k], cma, 1e-4);
+    }
 }

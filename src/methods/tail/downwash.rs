@@ -327,7 +327,7 @@ pub(crate) fn wakes_of(
         .enumerate()
         .map(|(k, &a)| {
             let cl = wing.cl.get(k).copied()?? * area_ratio;
-            Some(wing_wake(
+            let wake = wing_wake(
                 p.aspect_ratio,
                 p.mac,
                 cl,
@@ -335,7 +335,11 @@ pub(crate) fn wakes_of(
                 a,
                 placement.arm,
                 placement.angle_rad,
-            ))
+            );
+            if !wake.dynamic_pressure_ratio.is_finite() {
+                warnings.push(TailWarning::WakeMissesTail { wing_alpha_deg: a });
+            }
+            Some(wake)
         })
         .collect()
 }

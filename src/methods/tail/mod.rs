@@ -133,6 +133,10 @@ pub enum TailWarning {
     FinDragFrictionOnly { surface: &'static str },
     /// The wing has no zero-lift drag: no q/q∞.
     NoWingZeroLiftDrag,
+    /// At this wing angle (deg) the wing's wake leaves ahead of the tail (the distance along
+    /// it is not positive, far from the methods' range): no q/q∞ there, where the original
+    /// prints NaN.
+    WakeMissesTail { wing_alpha_deg: f64 },
     /// The tail has no pitching moment terms (aerodynamic centre, Cm0): no CM with it.
     NoTailMoment,
 }
@@ -151,6 +155,10 @@ impl fmt::Display for TailWarning {
             TailWarning::NoWingZeroLiftDrag => {
                 write!(f, "the wing has no zero-lift drag: no q/q_inf at the tail")
             }
+            TailWarning::WakeMissesTail { wing_alpha_deg } => write!(
+                f,
+                "at a wing angle of {wing_alpha_deg} deg the wing's wake leaves ahead of the horizontal tail (DATCOM 4.4.1's wake is for a tail behind the wing): no q/q_inf there and no coefficients with the tail (the original prints NaN)"
+            ),
             TailWarning::NoTailMoment => write!(
                 f,
                 "the horizontal tail has no aerodynamic centre or Cm0: no CM with the tail"

@@ -38,8 +38,10 @@ fn chord(x0: f64, x1: f64, y0: f64, y1: f64) -> Option<f64> {
     (h != 0.0).then(|| (y1 - y0) / h).filter(|s| s.is_finite())
 }
 
-/// Value and slope of the curve `y(x)` (`x` ascending) at `at`. None for an empty curve, a
-/// curve with a missing value, or coincident abscissae where the reading needs them.
+/// Value and slope of the curve `y(x)` (`x` ascending) at `at`. None where a node the reading
+/// uses has no value (a missing value spoils the readings that use it, as a NaN does in the
+/// original's, not the whole curve), for an empty curve, or for coincident abscissae where the
+/// reading needs them.
 pub(crate) fn read(
     x: &[f64],
     y: &[Option<f64>],
@@ -48,24 +50,25 @@ pub(crate) fn read(
     above: End,
 ) -> Option<(f64, f64)> {
     let n = x.len().min(y.len());
-    // Every value present (checked once; the readings below index without allocating).
-    if y[..n].iter().any(Option::is_none) {
-        return None;
-    }
-    let y = |i: usize| y[i].unwrap_or(f64::NAN);
     let x = &x[..n];
+    let y = |i: usize| y[i];
     if !at.is_finite() {
         return None;
     }
     // The parabola through the three nodes from `w`.
-    let parabola_from =
-        |w: usize| parabola(&[x[w], x[w + 1], x[w + 2]], &[y(w), y(w + 1), y(w + 2)], at);
+    let parabola_from = |w: usize| {
+        parabola(
+            &[x[w], x[w + 1], x[w + 2]],
+            &[y(w)?, y(w + 1)?, y(w + 2)?],
+            at,
+        )
+    };
     match n {
         0 => return None,
-        1 => return Some((y(0), 0.0)),
+        1 => return Some((y(0)?, 0.0)),
         2 => {
-            let s = chord(x[0], x[1], y(0), y(1))?;
-            return Some((y(0) + s * (at - x[0]), s));
+            let s = chord(x[0], x[1], y(0)?, y(1)?)?;
+            return Some((y(0)? + s * (at - x[0]), s));
         }
         _ => {}
     }
@@ -74,8 +77,8 @@ pub(crate) fn read(
         let w = k.max(1) - 1;
         let (_, slope) = parabola_from(w)?;
         let (a, b) = if at < x[1] { (0, 1) } else { (k, k + 1) };
-        let s = chord(x[a], x[b], y(a), y(b))?;
-        return Some((y(a) + s * (at - x[a]), slope));
+        let s = chord(x[a], x[b], y(a)?, y(b)?)?;
+        return Some((y(a)? + s * (at - x[a]), slope));
     }
     let upper = at >= x[n - 1];
     let (w, end, rule) = if upper {
@@ -86,15 +89,15 @@ pub(crate) fn read(
     match rule {
         End::Linear => {
             let s = if upper {
-                chord(x[n - 2], x[n - 1], y(n - 2), y(n - 1))?
+                chord(x[n - 2], x[n - 1], y(n - 2)?, y(n - 1)?)?
             } else {
-                chord(x[0], x[1], y(0), y(1))?
+                chord(x[0], x[1], y(0)?, y(1)?)?
             };
-            Some((y(end) + s * (at - x[end]), s))
+            Some((y(end)? + s * (at - x[end]), s))
         }
         End::Hold => {
             let (_, slope) = parabola_from(w)?;
-            Some((y(end), slope))
+            Some((y(end)?, slope))
         }
         End::Quadratic => parabola_from(w),
     }
@@ -111,6 +114,22 @@ pub(crate) fn node_slopes(x: &[f64], y: &[Option<f64>]) -> Vec<Option<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_missing_value_spoils_only_the_readings_through_it() {
+        let x = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let mut y: Vec<Option<f64>> = x.iter().map(|v| Some(v * v)).collect();
+        y[0] = None;
+        let slopes = node_slopes(&x, &y);
+        // Nodes 0 and 1 read the parabola through node 0; the others do not.
+        assert_eq!(&slopes[..2], &[None, None]);
+        for (k, s) in slopes.iter().enumerate().skip(2) {
+            let s = s.expect("a slope away from the missing value");
+            assert!((s - 2.0 * x[k]).abs() < 1e-12, "node {k}: {s}");
+        }
+        assert_eq!(read(&x, &y, 0.5, End::Linear, End::Linear), None);
+        assert!(read(&x, &y, 2.5, End::Linear, End::Linear).is_some());
+    }
 
     #[test]
     fn a_parabola_is_read_exactly_and_the_ends_as_told() {
