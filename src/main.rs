@@ -96,9 +96,11 @@ struct Rules {
     /// docs/differences.md).
     #[arg(long = "zero-lift", value_enum, default_value = "handbook")]
     zero_lift: ZeroLiftRule,
-    /// A forward-swept wing's aerodynamic centre where |tan(leading-edge sweep)|/beta exceeds
-    /// 1: the subsonic chart of figure 4.1.4.2-26 (default), or as the original program reads
-    /// it (its supersonic chart; to reproduce its listings; docs/differences.md).
+    /// A forward-swept wing: its aerodynamic centre where |tan(leading-edge sweep)|/beta
+    /// exceeds 1 by the subsonic chart of figure 4.1.4.2-26 and the vertical panels' roll-rate
+    /// terms as for any wing (default), or as the original program has them (its supersonic
+    /// chart, the panels' CLP and CLR left out; to reproduce its listings;
+    /// docs/differences.md).
     #[arg(long = "forward-sweep", value_enum, default_value = "handbook")]
     forward_sweep: ForwardSweepRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,

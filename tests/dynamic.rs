@@ -636,8 +636,11 @@ fn totals_are_the_sums_of_their_terms() {
                         continue;
                     };
                     let straight = wb.terms.wing.planform_type == WingType::Straight;
+                    // No Clr of the wing (forward-swept quarter chord), none of the whole.
+                    let forward = wb.terms.wing.terms.planform.quarter_chord.deg < 0.0;
                     for (j, (column, total)) in c.total.columns().iter().enumerate() {
-                        let overridden = (which == TailConfiguration::WingBodyHorizontalTail
+                        let overridden = ((which == TailConfiguration::WingBodyHorizontalTail
+                            || forward)
                             && *column == "CLR")
                             || (!straight && j < 4);
                         if overridden {

@@ -1018,3 +1018,51 @@ fn a_missing_value_spoils_only_the_slopes_read_through_it() {
         agrees(s.cma[k], cma, 1e-4);
     }
 }
+
+/// The forward-swept wing-body with a vertical tail and DAMP. DATCOM 7.1.3.2 has no Clr
+/// method for a forward-swept quarter chord: the configuration's CLR had the tail's terms alone
+/// (a part printed as the whole); it has none now, as the original prints NDM. The original
+/// also skips the fins' Clp and Clr then (CLRDER computes them in the same loop); its
+/// configuration CLP is the wing-body's alone, which `--forward-sweep original` reproduces.
+/// Reference: a build of the original's public source (gfortran, outside this repository).
+#[test]
+fn a_forward_swept_wing_has_no_clr_and_the_original_leaves_the_fins_clp_out() {
+    let deck = forward_swept_deck(0.2, -30.0).replace(
+        "ZW=0.0, ALIW=0.0$",
+        "ZW=0.0, ALIW=0.0, XV=3.6, ZV=0.2$\n \
+         $VTPLNF CHRDR=0.9, CHRDTP=0.4, SSPN=0.8, SSPNE=0.7, SAVSI=35.0, CHSTAT=0.0,\n   \
+         TYPE=1.0$\nNACA-V-4-0010",
+    );
+    let deck = format!("DAMP\n{deck}");
+    let name = "WING-BODY-VERTICAL TAIL CONFIGURATION";
+    let dynamic = |r: &datcom::results::Results| {
+        r.cases[0]
+            .conditions
+            .iter()
+            .find(|c| c.configuration == name)
+            .and_then(|c| c.dynamic.clone())
+            .expect("the configuration's dynamic derivatives")
+    };
+    let original = dynamic(&datcom::run(&read(&deck).with_original_rules()));
+    let per_deg = |v: Option<f64>| v.map(f64::to_radians);
+    for (k, clp) in [-5.668e-3, -5.716e-3, -5.854e-3, -4.921e-3, -2.874e-3]
+        .into_iter()
+        .enumerate()
+    {
+        agrees(per_deg(original.clp[k]), clp, 1e-6);
+    }
+    assert!(
+        original.no_method.contains(&"CLR"),
+        "{:?}",
+        original.no_method
+    );
+    // The library's default keeps the fin's roll damping (away from 0°, where its arm
+    // vanishes) and has no CLR either.
+    let default = dynamic(&datcom::run(&read(&deck)));
+    assert!(default.no_method.contains(&"CLR"));
+    let fin_term = per_deg(default.clp[4]).zip(per_deg(original.clp[4]));
+    assert!(
+        fin_term.is_some_and(|(d, o)| (d - o).abs() > 1e-5),
+        "{fin_term:?}"
+    );
+}

@@ -5,11 +5,12 @@ use serde::Serialize;
 
 use super::{finite, Column, Dynamic, DynamicError, DynamicWarning};
 use crate::case::Case;
+use crate::geometry::{planform as planform_geometry, Span};
 use crate::methods::lateral::{
     fin_lateral, twin_panel_lateral, twin_panels_counted, ventral_fin_left_out, Fin,
 };
 use crate::methods::tail::{tail_position, ConfigurationTotals};
-use crate::methods::wing::WingType;
+use crate::methods::wing::{quarter_chord_sweep, ForwardSweepReading, WingType};
 use crate::methods::wing_body::WingBody;
 
 /// Wing to horizontal-tail semispan ratio from which the tail's pitch-rate increment takes the
@@ -119,7 +120,23 @@ pub fn fin_dynamic(
     out.clp = each(&|c, zz, _| 2.0 * c * zz * (zz - z) / (b * b));
     out.clr = each(&|c, zz, ll| -2.0 * c * ll * zz / (b * b));
     out.cyr = each(&|c, _, ll| -2.0 * ll * c / b);
+    if case.forward_sweep == ForwardSweepReading::Original && wing_swept_forward(case) {
+        // The original computes the fins' Clp and Clr with the configuration's Clr (CLRDER)
+        // and skips all three for a forward-swept wing (docs/differences.md).
+        out.clp = Column::NoMethod;
+        out.clr = Column::NoMethod;
+        out.warnings.push(DynamicWarning::FinRollTermsLeftOut);
+    }
     Ok(out)
+}
+
+/// The wing's quarter chord is swept forward (the wing methods' sweep): DATCOM 7.1.3.2 has
+/// no Clr method for it.
+fn wing_swept_forward(case: &Case) -> bool {
+    case.wing
+        .as_ref()
+        .and_then(|w| planform_geometry(w, Span::Both).ok())
+        .is_some_and(|g| quarter_chord_sweep(&g).deg < 0.0)
 }
 
 /// Which configuration with tails.
@@ -235,8 +252,12 @@ pub fn wing_body_tail_dynamic(
     total.cnr = sum(|d| &d.cnr);
     total.clr = sum(|d| &d.clr);
     total.cyr = sum(|d| &d.cyr);
-    if !with_fins {
+    // Without the wing's Clr (a forward-swept quarter chord) the configuration has none: the
+    // fins' terms alone are not its Clr (the original prints NDM).
+    if !with_fins || wing_swept_forward(case) {
         total.clr = Column::NoMethod;
+    }
+    if !with_fins {
         total.cyr = Column::NoMethod;
     }
     if totals.terms.wing_body.terms.wing.planform_type != WingType::Straight {

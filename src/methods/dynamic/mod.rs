@@ -80,6 +80,9 @@ pub enum DynamicWarning {
     BodyTooWide { fraction: f64 },
     /// A forward-swept quarter chord: no Clr method (NDM).
     ForwardSweep,
+    /// Under the original's forward-sweep reading, a fin's Clp and Clr with a forward-swept
+    /// wing: left out (NDM), as the original skips them.
+    FinRollTermsLeftOut,
     /// The body's nose or tail is not of the nose-cylinder type the body method assumes.
     BodyShape,
     /// A ventral fin without a horizontal tail: its terms are left out
@@ -108,7 +111,11 @@ impl fmt::Display for DynamicWarning {
             ),
             DynamicWarning::ForwardSweep => write!(
                 f,
-                "forward-swept quarter chord: no CLR method (NDM), as the original"
+                "forward-swept quarter chord: no CLR method (NDM), as the original; nor for a configuration with it"
+            ),
+            DynamicWarning::FinRollTermsLeftOut => write!(
+                f,
+                "the vertical panels' CLP and CLR are left out with a forward-swept wing, as the original (--forward-sweep original)"
             ),
             DynamicWarning::BodyShape => write!(
                 f,

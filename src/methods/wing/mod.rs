@@ -72,7 +72,8 @@ pub use pitching_moment::{
     ForwardSweepReading, MomentInputs, NonlinearCentre, PitchingMoment, ZeroLiftMoment,
 };
 pub use planform::{
-    Chords, ExtendedOutboard, MaxThicknessStations, PanelTerms, Sweep, WingPlanform,
+    quarter_chord_sweep, Chords, ExtendedOutboard, MaxThicknessStations, PanelTerms, Sweep,
+    WingPlanform,
 };
 pub use section_inputs::{wing_section, WingSection};
 pub use zero_lift_angle::{

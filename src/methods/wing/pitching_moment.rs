@@ -11,17 +11,20 @@ use super::lift::LiftAtAngle;
 use super::planform::WingPlanform;
 use super::{WingMethodError, WingType, WingWarning, NONLINEAR_ASPECT_LIMIT};
 
-/// How the aerodynamic centre of a forward-swept leading edge is read at subsonic speeds
-/// where |tan Λ_LE|/β exceeds 1 (figure 4.1.4.2-26, forward sweep).
+/// What the methods do with a forward-swept wing where the original departs from DATCOM: the
+/// aerodynamic centre of a forward-swept leading edge at subsonic speeds where |tan Λ_LE|/β
+/// exceeds 1 (figure 4.1.4.2-26, forward sweep), and the vertical panels' roll-rate terms
+/// with a forward-swept quarter chord.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ForwardSweepReading {
     /// The subsonic chart in β/|tan Λ_LE| (it joins the chart in |tan Λ_LE|/β at 1 and the
-    /// supersonic chart at Mach 1).
+    /// supersonic chart at Mach 1); the fins' Clp and Clr as for any wing.
     #[default]
     Handbook,
-    /// As the original program (FWDXAC): its supersonic chart in tan Λ_LE/β read at
-    /// β/|tan Λ_LE|, the subsonic one never read. For reproducing old listings
+    /// As the original program: its supersonic chart in tan Λ_LE/β read at β/|tan Λ_LE|, the
+    /// subsonic one never read (FWDXAC); the fins' Clp and Clr left out (NDM) when the wing's
+    /// quarter chord is swept forward (CLRDER). For reproducing old listings
     /// (docs/differences.md).
     Original,
 }

@@ -193,6 +193,11 @@ impl WingPlanform {
     }
 }
 
+/// The quarter-chord sweep the wing methods take ([`WingPlanform::quarter_chord`]).
+pub fn quarter_chord_sweep(g: &PlanformGeometry) -> Sweep {
+    total_sweep(g, 0.25)
+}
+
 fn total_sweep(g: &PlanformGeometry, x: f64) -> Sweep {
     if g.outboard.is_none() {
         Sweep::from_tan(g.tan_sweep_inboard(x))
