@@ -387,7 +387,20 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
     let name = path.display().to_string();
     let json = if text.trim_start().starts_with('{') {
         text.into_owned()
-    } else if text.contains("AUTOMATED STABILITY AND CONTROL METHODS") {
+    } else if datcom::report::legacy::is_listing(&text) {
+        // A listing without result pages is no reference: read as a deck, its echo of the
+        // input cards would be run here and agree with ours.
+        if datcom::report::legacy::read_listing(&text).is_empty() {
+            let why = if text.contains("CONERR") {
+                "it stopped at input errors: see its CONERR page"
+            } else {
+                "no CHARACTERISTICS AT ANGLE OF ATTACK page"
+            };
+            eprintln!(
+                "datcom-rs: {name}: a listing of the original program without results ({why}); nothing to compare"
+            );
+            return Err(ExitCode::from(2));
+        }
         datcom::report::json::listing_to_string(&text, &name)
     } else {
         let deck = rules.apply(datcom::read_deck(&text, &name));
@@ -448,8 +461,8 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, rules: Rules) -> 
             return ExitCode::from(2);
         }
     };
-    let is_results = text.trim_start().starts_with('{')
-        || text.contains("AUTOMATED STABILITY AND CONTROL METHODS");
+    let is_results =
+        text.trim_start().starts_with('{') || datcom::report::legacy::is_listing(&text);
     let out = if is_results {
         // A listing or a result: agreement per coefficient, as `compare`.
         let (a, b) = match (results_json(deck, rules), results_json(reference, rules)) {

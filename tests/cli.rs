@@ -175,3 +175,36 @@ fn original_is_every_original_rule_at_once() {
         "the original's rules change this deck's numbers"
     );
 }
+
+/// A listing of the original that stopped at input errors has no result pages. It holds the
+/// deck's cards (the original echoes them), so read as a deck it was run here and agreed with
+/// ours in every number: `compare` and `report` reported 100 % against nothing.
+#[test]
+fn a_listing_without_results_is_refused_not_read_as_a_deck() {
+    let dir = temp_dir("empty-listing");
+    let deck = std::fs::read_to_string(example()).unwrap();
+    let listing = dir.join("for006.dat");
+    std::fs::write(
+        &listing,
+        format!(
+            " THIS SOFTWARE AND ANY ACCOMPANYING DOCUMENTATION\n IS RELEASED \"AS IS\".\n\
+             1                         CONERR - INPUT ERROR CHECKING\n\
+             0 F - SYNTAX ERROR\n\
+             1          THE FOLLOWING IS A LIST OF ALL INPUT CARDS FOR THIS CASE.\n{deck}\n\
+             1 END OF JOB.\n"
+        ),
+    )
+    .unwrap();
+    let listing = listing.to_str().unwrap();
+    for args in [
+        ["compare", &example(), listing],
+        ["report", &example(), &format!("--reference={listing}")],
+    ] {
+        let command = args[0];
+        let out = bin().args(args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{command}: {stderr}");
+        assert!(stderr.contains("without results"), "{command}: {stderr}");
+        assert!(out.stdout.is_empty(), "{command}");
+    }
+}

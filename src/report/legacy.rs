@@ -65,6 +65,22 @@ pub fn last_digit_unit(text: &str) -> f64 {
     10f64.powi(exp - decimals)
 }
 
+/// Lines only the original program's output (and our listing layout) has: its page title, the
+/// disclaimer it opens with, its input-error page and its echo of the input cards. A deck
+/// has none of them (its cards are what a listing echoes, not these lines).
+const LISTING_MARKS: [&str; 4] = [
+    "AUTOMATED STABILITY AND CONTROL METHODS",
+    "THIS SOFTWARE AND ANY ACCOMPANYING DOCUMENTATION",
+    "CONERR - INPUT ERROR CHECKING",
+    "THE FOLLOWING IS A LIST OF ALL INPUT CARDS",
+];
+
+/// Whether `text` is a listing of the original program (for006.dat), also one that stopped
+/// before any result page (an input error), rather than a deck.
+pub fn is_listing(text: &str) -> bool {
+    LISTING_MARKS.iter().any(|m| text.contains(m))
+}
+
 /// Every FLIGHT CONDITIONS row of a listing, with its page kind.
 pub fn flight_condition_rows(listing: &str) -> Vec<ConditionRow> {
     let lines: Vec<&str> = listing.lines().collect();
