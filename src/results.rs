@@ -1175,6 +1175,15 @@ fn reference(case: &Case) -> ReferenceDimensions {
 /// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
 /// gives, with a warning.
 pub fn run_case(case: &Case) -> CaseResults {
+    if build_up_implied(case) {
+        // The original's pages for such a case: the whole build-up and the partial output.
+        let mut built = case.clone();
+        built.cards.build = true;
+        built.cards.part = true;
+        let mut results = run_case(&built);
+        results.warnings.insert(0, BUILD_UP_IMPLIED.to_string());
+        return results;
+    }
     let ordered = case
         .flight
         .as_ref()
@@ -1202,6 +1211,23 @@ pub fn run_case(case: &Case) -> CaseResults {
     let mut results = compute_case(&fixed);
     results.warnings.splice(0..0, notes);
     results
+}
+
+/// Why a case without BUILD or PART prints the build-up and the partial output.
+const BUILD_UP_IMPLIED: &str = "a double-delta or cranked wing with a body and tails: the configuration has no lift, drag or moment method, and the pages of the build-up and the partial output (PART) are given as with BUILD and PART, as the original prints them";
+
+/// A body, a wing other than straight-tapered and a tail or fin, without BUILD or PART: the
+/// original prints the build-up and the partial output for it as if both cards were given (its
+/// configuration page has no lift, drag or moment method).
+fn build_up_implied(case: &Case) -> bool {
+    use crate::methods::wing::WingType;
+    let tails = case.horizontal_tail.is_some()
+        || case.vertical_tail.is_some()
+        || case.ventral_fin.is_some();
+    let not_straight = case.wing.as_ref().is_some_and(|w| {
+        WingType::from_input(w.planform_type).is_some_and(|t| t != WingType::Straight)
+    });
+    case.body.is_some() && tails && not_straight && !(case.cards.build && case.cards.part)
 }
 
 /// Leaves none of a page's coefficients infinite or NaN: each such value becomes none (not

@@ -1066,3 +1066,59 @@ fn a_forward_swept_wing_has_no_clr_and_the_original_leaves_the_fins_clp_out() {
         "{fin_term:?}"
     );
 }
+
+/// A cranked wing with a body and both tails (no BUILD card). DATCOM's downwash and the
+/// configuration's lift, drag and moment with tails are for straight-tapered wings: the
+/// original prints NDM there, computes the sideslip and rate derivatives, and prints the whole
+/// build-up and the partial output as if BUILD and PART were given. We printed one empty page
+/// ("no coefficients computed"). Reference: a build of the original's public source (gfortran,
+/// outside this repository) on this deck.
+#[test]
+fn a_cranked_wing_with_tails_has_its_sideslip_and_rate_derivatives_and_the_build_up() {
+    let deck = "DAMP\n $FLTCON NMACH=1.0, MACH(1)=0.2, NALPHA=5.0, ALSCHD(1)=-2.0,0.0,4.0,8.0,12.0,\n   \
+         RNNUB(1)=4.26E6$\n $OPTINS SREF=2.25, CBARR=0.822, BLREF=3.0$\n \
+         $SYNTHS XCG=2.6, ZCG=0.0, XW=1.7, ZW=0.0, ALIW=0.0, XH=4.0, ZH=0.1,\n   XV=3.6, ZV=0.2$\n \
+         $BODY NX=10.0, X(1)=0.0,0.175,0.322,0.53,0.85,1.46,2.5,3.43,3.97,4.57,\n   \
+         R(1)=0.0,0.0417,0.0833,0.125,0.1665,0.208,0.208,0.208,0.178,0.138$\n \
+         $WGPLNF CHRDR=1.16, CHRDTP=0.346, CHRDBP=0.8, SSPN=1.5, SSPNE=1.29,\n   \
+         SSPNOP=0.9, SAVSI=30.0, SAVSO=40.0, CHSTAT=0.25, TYPE=3.0$\n \
+         $WGSCHR TOVC=0.06, XOVC=0.4, CLI=0.0, ALPHAI=0.0, CLALPA(1)=0.131,\n   \
+         CLMAX(1)=0.82, CMO=0.0, LERI=0.0025, LERO=0.0025, CLAMO=0.105,\n   CLMAXL=0.8, DELTAY=1.3$\n \
+         $HTPLNF CHRDR=0.5, CHRDTP=0.3, SSPN=0.7, SSPNE=0.6, SAVSI=10.0, CHSTAT=0.0,\n   TYPE=1.0$\n\
+         NACA-H-4-0010\n \
+         $VTPLNF CHRDR=0.9, CHRDTP=0.4, SSPN=0.8, SSPNE=0.7, SAVSI=35.0, CHSTAT=0.0,\n   TYPE=1.0$\n\
+         NACA-V-4-0010\n";
+    let r = datcom::run(&read(deck).with_original_rules());
+    assert_eq!(page_names(&r).len(), 10, "{:?}", page_names(&r));
+    let whole = "WING-BODY-VERTICAL TAIL-HORIZONTAL TAIL CONFIGURATION";
+    let s = page(&r, whole);
+    assert!(s.cl.iter().chain(&s.cd).chain(&s.cm).all(Option::is_none));
+    let per_deg = |v: Option<f64>| v.map(f64::to_radians);
+    agrees(per_deg(s.cyb[0]), -1.092e-2, 1e-5);
+    agrees(per_deg(s.cnb[0]), 2.545e-3, 1e-6);
+    for (k, clb) in [8.246e-5, -1.702e-3, -5.013e-3, -7.193e-3, -9.544e-3]
+        .into_iter()
+        .enumerate()
+    {
+        agrees(per_deg(s.clb[k]), clb, 1e-6);
+    }
+    let d = r.cases[0]
+        .conditions
+        .iter()
+        .find(|c| c.configuration == whole)
+        .and_then(|c| c.dynamic.as_ref())
+        .expect("DAMP");
+    for (k, clp, cnr) in [(0, -6.086e-3, -4.084e-3), (4, -4.077e-3, -5.377e-3)] {
+        agrees(per_deg(d.clp[k]), clp, 1e-6);
+        agrees(per_deg(d.cnr[k]), cnr, 1e-6);
+    }
+    // The build-up's wing-body page.
+    let wb = page(&r, "WING-BODY CONFIGURATION");
+    for (k, cl) in [-0.138, 0.0, 0.258, 0.435, 0.624].into_iter().enumerate() {
+        agrees(wb.cl[k], cl, 1e-3);
+    }
+    assert!(r.cases[0]
+        .warnings
+        .iter()
+        .any(|w| w.contains("the pages of the build-up and the partial output (PART) are given")));
+}

@@ -139,6 +139,9 @@ pub enum TailWarning {
     WakeMissesTail { wing_alpha_deg: f64 },
     /// The tail has no pitching moment terms (aerodynamic centre, Cm0): no CM with it.
     NoTailMoment,
+    /// A double-delta or cranked wing with tails: no downwash, lift, drag or moment of the
+    /// configuration (the original prints NDM); the sideslip and rate derivatives are given.
+    NoLongitudinalMethod,
 }
 
 impl fmt::Display for TailWarning {
@@ -158,6 +161,10 @@ impl fmt::Display for TailWarning {
             TailWarning::WakeMissesTail { wing_alpha_deg } => write!(
                 f,
                 "at a wing angle of {wing_alpha_deg} deg the wing's wake leaves ahead of the horizontal tail (DATCOM 4.4.1's wake is for a tail behind the wing): no q/q_inf there and no coefficients with the tail (the original prints NaN)"
+            ),
+            TailWarning::NoLongitudinalMethod => write!(
+                f,
+                "the wing is not straight tapered: DATCOM's downwash and the configuration's CD, CL, CM, CN, CA, XCP, CLA and CMA with tails are for straight-tapered wings (the original prints NDM); the sideslip and rate derivatives are computed"
             ),
             TailWarning::NoTailMoment => write!(
                 f,
@@ -182,6 +189,21 @@ pub struct Coefficients {
 }
 
 impl Coefficients {
+    /// No value at any of `n` angles (a page without a method).
+    pub fn none(n: usize) -> Coefficients {
+        let none = || vec![None; n];
+        Coefficients {
+            cd: none(),
+            cl: none(),
+            cm: none(),
+            cn: none(),
+            ca: none(),
+            xcp: none(),
+            cla_per_rad: none(),
+            cma_per_rad: none(),
+        }
+    }
+
     /// CD, CL, CM, CLA, CMA given; CN, CA resolved at the schedule angle and XCP = CM/CN.
     pub fn resolved(
         alpha_deg: &[f64],
@@ -275,7 +297,8 @@ fn subsonic_condition(case: &Case, condition_index: usize) -> Result<(), TailErr
     Ok(())
 }
 
-fn straight_wing_body(
+/// The wing-body of a configuration with tails, at a subsonic condition.
+fn tail_wing_body(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
@@ -287,7 +310,16 @@ fn straight_wing_body(
         return Err(TailError::NoBody);
     }
     subsonic_condition(case, condition_index)?;
-    let wb = wing_body(case, condition_index, alpha_deg).map_err(TailError::WingBody)?;
+    wing_body(case, condition_index, alpha_deg).map_err(TailError::WingBody)
+}
+
+/// [`tail_wing_body`] with a straight-tapered wing (the downwash methods need one).
+fn straight_wing_body(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+) -> Result<WingBody, TailError> {
+    let wb = tail_wing_body(case, condition_index, alpha_deg)?;
     if wb.terms.wing.planform_type != WingType::Straight {
         return Err(TailError::NotStraightWing);
     }
@@ -355,7 +387,11 @@ pub fn configuration(
     if case.horizontal_tail.is_none() && !has_fin {
         return Err(TailError::NoTail);
     }
-    let wb = straight_wing_body(case, condition_index, alpha_deg)?;
+    let wb = tail_wing_body(case, condition_index, alpha_deg)?;
+    // A double-delta or cranked wing: no downwash method, and the original gives the pages no
+    // lift, drag or moment (NDM); their sideslip and rate derivatives are computed.
+    let straight = wb.terms.wing.planform_type == WingType::Straight;
+    let n = alpha_deg.len();
     // Of the wing-body's warnings, those the configuration's numbers carry without a page of
     // their own: experimental data used, the body's where its numbers are ours because the
     // original's are undefined, and a wing beside the aspect-ratio boundary.
@@ -377,6 +413,9 @@ pub fn configuration(
         .cloned()
         .map(TailWarning::WingBody)
         .collect();
+    if !straight {
+        warnings.push(TailWarning::NoLongitudinalMethod);
+    }
 
     // Fins.
     let mut fin = |surface: Surface, present: bool| -> Result<Option<FinZeroLiftDrag>, TailError> {
@@ -392,6 +431,9 @@ pub fn configuration(
         cd.iter().map(|c| c.map(|c| c + fin_drag)).collect()
     };
     let wing_body_vertical_tail = has_fin.then(|| {
+        if !straight {
+            return Coefficients::none(n);
+        }
         Coefficients::resolved(
             alpha_deg,
             with_fins(&wb.cd),
@@ -422,47 +464,55 @@ pub fn configuration(
             wb.terms.wing.terms.planform.semispan,
             tail.surface.terms.planform.semispan,
         );
-        let (t, first, page) = if method == DownwashMethod::Canard {
-            let mut c =
-                canard::canard(case, condition_index, alpha_deg, &wb, &tail, &mut warnings)?;
-            let zeros = vec![Some(0.0); alpha_deg.len()];
-            let q = c.dynamic_pressure_ratio.clone();
-            let flow = FlowAtTail {
-                dynamic_pressure_ratio: &q,
-                epsilon_deg: &zeros,
-                gradient: &zeros,
-                canard: Some(&mut c),
-            };
-            let out = wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, flow, &mut warnings)?;
-            canard_terms = Some(c);
-            out
+        if !straight {
+            horizontal_tail = Some(tail);
+            wbh = Some(Coefficients::none(n));
+            wbhv = has_fin.then(|| Coefficients::none(n));
         } else {
-            let d = downwash::downwash_from(case, alpha_deg, condition_index, &wb, &tail)?;
-            warnings.extend(d.warnings.iter().cloned());
-            let flow = FlowAtTail {
-                dynamic_pressure_ratio: &d.dynamic_pressure_ratio,
-                epsilon_deg: &d.epsilon_deg,
-                gradient: &d.gradient,
-                canard: None,
+            let (t, first, page) = if method == DownwashMethod::Canard {
+                let mut c =
+                    canard::canard(case, condition_index, alpha_deg, &wb, &tail, &mut warnings)?;
+                let zeros = vec![Some(0.0); alpha_deg.len()];
+                let q = c.dynamic_pressure_ratio.clone();
+                let flow = FlowAtTail {
+                    dynamic_pressure_ratio: &q,
+                    epsilon_deg: &zeros,
+                    gradient: &zeros,
+                    canard: Some(&mut c),
+                };
+                let out =
+                    wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, flow, &mut warnings)?;
+                canard_terms = Some(c);
+                out
+            } else {
+                let d = downwash::downwash_from(case, alpha_deg, condition_index, &wb, &tail)?;
+                warnings.extend(d.warnings.iter().cloned());
+                let flow = FlowAtTail {
+                    dynamic_pressure_ratio: &d.dynamic_pressure_ratio,
+                    epsilon_deg: &d.epsilon_deg,
+                    gradient: &d.gradient,
+                    canard: None,
+                };
+                let out =
+                    wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, flow, &mut warnings)?;
+                dw = Some(d);
+                out
             };
-            let out = wing_body_horizontal_tail(case, alpha_deg, &wb, &tail, flow, &mut warnings)?;
-            dw = Some(d);
-            out
-        };
-        if has_fin {
-            wbhv = Some(Coefficients::resolved(
-                alpha_deg,
-                with_fins(&page.cd),
-                page.cl.clone(),
-                page.cm.clone(),
-                page.cla_per_rad.clone(),
-                page.cma_per_rad.clone(),
-            ));
+            if has_fin {
+                wbhv = Some(Coefficients::resolved(
+                    alpha_deg,
+                    with_fins(&page.cd),
+                    page.cl.clone(),
+                    page.cm.clone(),
+                    page.cla_per_rad.clone(),
+                    page.cma_per_rad.clone(),
+                ));
+            }
+            horizontal_tail = Some(tail);
+            tb = Some(t);
+            first_slopes = first;
+            wbh = Some(page);
         }
-        horizontal_tail = Some(tail);
-        tb = Some(t);
-        first_slopes = first;
-        wbh = Some(page);
     }
     Ok(ConfigurationTotals {
         reference_area: wb.reference_area,
