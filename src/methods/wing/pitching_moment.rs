@@ -84,38 +84,12 @@ pub fn zero_lift_moment(
 }
 
 /// x_ac/c_r of figure 4.1.4.2-26 for a trapezoid of aspect ratio `a`, taper `taper` and
-/// leading-edge sweep tangent `tan_le`: chart a for tan Λ_LE/β < 1, chart b otherwise.
+/// leading-edge sweep tangent `tan_le`, in A |tan Λ_LE|: chart a in |tan Λ_LE|/β below the
+/// sonic leading edge, chart b in β/|tan Λ_LE| beyond. A forward-swept leading edge
+/// (tan Λ_LE < 0) reads the forward-sweep charts, its chart b by `reading` (the original's
+/// FWDXAC; docs/wing.md). As the original, the edge itself is read in chart b when swept back
+/// and in chart a when swept forward.
 fn trapezoid_aerodynamic_centre(
-    a: f64,
-    taper: f64,
-    tan_le: f64,
-    beta: f64,
-    reading: ForwardSweepReading,
-    warnings: &mut Vec<WingWarning>,
-) -> Result<f64, WingMethodError> {
-    if tan_le < 0.0 {
-        return forward_swept_aerodynamic_centre(a, taper, tan_le, beta, reading, warnings);
-    }
-    let subsonic_edge = tan_le / beta;
-    if subsonic_edge < 1.0 {
-        figures::read(
-            AERODYNAMIC_CENTRE_SUBSONIC_EDGE,
-            &[taper, a * tan_le, subsonic_edge],
-            warnings,
-        )
-    } else {
-        figures::read(
-            AERODYNAMIC_CENTRE_SONIC_EDGE,
-            &[taper, a * tan_le, beta / tan_le],
-            warnings,
-        )
-    }
-}
-
-/// x_ac/c_r of a trapezoid with a forward-swept leading edge (tan Λ_LE < 0), subsonic:
-/// the forward-sweep charts of figure 4.1.4.2-26 in A |tan Λ_LE| and |tan Λ_LE|/β up to 1,
-/// β/|tan Λ_LE| beyond (the original's FWDXAC; docs/wing.md).
-fn forward_swept_aerodynamic_centre(
     a: f64,
     taper: f64,
     tan_le: f64,
@@ -125,18 +99,28 @@ fn forward_swept_aerodynamic_centre(
 ) -> Result<f64, WingMethodError> {
     let tan = tan_le.abs();
     let edge = tan / beta;
-    if edge <= 1.0 {
-        return figures::read(
+    let (chart_a, chart_b, in_chart_a) = if tan_le < 0.0 {
+        let chart_b = match reading {
+            ForwardSweepReading::Handbook => FORWARD_AERODYNAMIC_CENTRE_SONIC_EDGE,
+            ForwardSweepReading::Original => FORWARD_AERODYNAMIC_CENTRE_AS_ORIGINAL,
+        };
+        (
             FORWARD_AERODYNAMIC_CENTRE_SUBSONIC_EDGE,
-            &[taper, a * tan, edge],
-            warnings,
-        );
-    }
-    let chart = match reading {
-        ForwardSweepReading::Handbook => FORWARD_AERODYNAMIC_CENTRE_SONIC_EDGE,
-        ForwardSweepReading::Original => FORWARD_AERODYNAMIC_CENTRE_AS_ORIGINAL,
+            chart_b,
+            edge <= 1.0,
+        )
+    } else {
+        (
+            AERODYNAMIC_CENTRE_SUBSONIC_EDGE,
+            AERODYNAMIC_CENTRE_SONIC_EDGE,
+            edge < 1.0,
+        )
     };
-    figures::read(chart, &[taper, a * tan, beta / tan], warnings)
+    if in_chart_a {
+        figures::read(chart_a, &[taper, a * tan, edge], warnings)
+    } else {
+        figures::read(chart_b, &[taper, a * tan, beta / tan], warnings)
+    }
 }
 
 /// Inputs of [`aerodynamic_centre`].
@@ -441,7 +425,7 @@ mod tests {
         let mut w = Vec::new();
         for a_tan in [1.0, 2.0, 4.0, 6.0] {
             let tan = 1e-6;
-            let x = forward_swept_aerodynamic_centre(
+            let x = trapezoid_aerodynamic_centre(
                 a_tan / tan,
                 1.0,
                 -tan,
