@@ -884,6 +884,12 @@ fn dynamic_derivatives(
         "Mach {}: dynamic derivatives",
         case.conditions.get(index).map_or(0.0, |c| c.mach)
     );
+    // With a double-delta or cranked wing the original computes none of the tails' pitch-rate
+    // and α̇ terms: the fins' and body-tail pages print NDM there (docs/tail.md).
+    let wing_not_straight = case.wing.as_ref().is_some_and(|w| {
+        crate::methods::wing::WingType::from_input(w.planform_type)
+            .is_some_and(|t| t != crate::methods::wing::WingType::Straight)
+    });
     let computed: Result<Dynamic, String> = (|| {
         let body = |b: &crate::methods::body::BodyAlone| {
             dy::body_dynamic(case, b, alpha_deg).map_err(|e| e.to_string())
@@ -947,7 +953,11 @@ fn dynamic_derivatives(
                     dy::fin_dynamic(case, index, alpha_deg, fin).map_err(|e| e.to_string())?
                 };
                 for column in [&mut d.clq, &mut d.cmq, &mut d.clad, &mut d.cmad] {
-                    *column = dy::Column::first(n, Some(0.0));
+                    *column = if wing_not_straight {
+                        dy::Column::NoMethod
+                    } else {
+                        dy::Column::first(n, Some(0.0))
+                    };
                 }
                 Ok(d)
             }
@@ -956,8 +966,10 @@ fn dynamic_derivatives(
                 // the original.
                 let b = body_alone()?;
                 let mut d = Dynamic::no_method(alpha_deg);
-                (d.clq, d.cmq, d.clad, d.cmad, d.warnings) =
-                    (b.clq, b.cmq, b.clad, b.cmad, b.warnings);
+                d.warnings = b.warnings;
+                if !wing_not_straight {
+                    (d.clq, d.cmq, d.clad, d.cmad) = (b.clq, b.cmq, b.clad, b.cmad);
+                }
                 Ok(d)
             }
             BODY_HT => {
@@ -972,6 +984,10 @@ fn dynamic_derivatives(
                 let mut d = dy::wing_body_dynamic(&horizontal_tail()?, &body_alone()?, &wb);
                 for column in [&mut d.cyp, &mut d.cnp, &mut d.cnr, &mut d.clr] {
                     *column = dy::Column::NoMethod;
+                }
+                if wing_not_straight {
+                    d.clq = dy::Column::NoMethod;
+                    d.cmq = dy::Column::NoMethod;
                 }
                 Ok(d)
             }

@@ -639,10 +639,15 @@ fn totals_are_the_sums_of_their_terms() {
                     // No Clr of the wing (forward-swept quarter chord), none of the whole.
                     let forward = wb.terms.wing.terms.planform.quarter_chord.deg < 0.0;
                     for (j, (column, total)) in c.total.columns().iter().enumerate() {
+                        // Without a straight wing no tail pitch-rate or α̇ method: the
+                        // wing-body-vertical tail keeps the wing-body's CLQ and CMQ.
+                        let pitch_overridden = !straight
+                            && j < 4
+                            && (j >= 2 || which != TailConfiguration::WingBodyVerticalTail);
                         let overridden = ((which == TailConfiguration::WingBodyHorizontalTail
                             || forward)
                             && *column == "CLR")
-                            || (!straight && j < 4);
+                            || pitch_overridden;
                         if overridden {
                             assert_eq!(**total, Column::NoMethod, "{name}: {column} overridden");
                             continue;

@@ -1112,6 +1112,28 @@ fn a_cranked_wing_with_tails_has_its_sideslip_and_rate_derivatives_and_the_build
         agrees(per_deg(d.clp[k]), clp, 1e-6);
         agrees(per_deg(d.cnr[k]), cnr, 1e-6);
     }
+    // The tails' pitch-rate and α̇ terms: none with such a wing; the wing-body-vertical tail
+    // has the wing-body's CLQ and CMQ.
+    let dynamic = |name: &str| {
+        r.cases[0]
+            .conditions
+            .iter()
+            .find(|c| c.configuration == name)
+            .and_then(|c| c.dynamic.clone())
+            .unwrap_or_else(|| panic!("{name}: DAMP"))
+    };
+    for name in [
+        "VERTICAL TAIL CONFIGURATION",
+        "BODY-HORIZONTAL TAIL CONFIGURATION",
+        "BODY-VERTICAL TAIL CONFIGURATION",
+        whole,
+    ] {
+        let d = dynamic(name);
+        assert!(d.no_method.contains(&"CLQ") && d.no_method.contains(&"CMQ"), "{name}");
+    }
+    let wbv = dynamic("WING-BODY-VERTICAL TAIL CONFIGURATION");
+    agrees(per_deg(wbv.clq[0]), 1.830e-2, 1e-5);
+    agrees(per_deg(wbv.cmq[0]), -1.689e-2, 1e-5);
     // The build-up's wing-body page.
     let wb = page(&r, "WING-BODY CONFIGURATION");
     for (k, cl) in [-0.138, 0.0, 0.258, 0.435, 0.624].into_iter().enumerate() {

@@ -260,9 +260,14 @@ pub fn wing_body_tail_dynamic(
     if !with_fins {
         total.cyr = Column::NoMethod;
     }
+    // With a double-delta or cranked wing there is no tail pitch-rate or α̇ method: the
+    // configurations with the horizontal tail have none, the wing-body-vertical tail the
+    // wing-body's pitch-rate terms (as the original prints them).
     if totals.terms.wing_body.terms.wing.planform_type != WingType::Straight {
-        total.clq = Column::NoMethod;
-        total.cmq = Column::NoMethod;
+        if with_tail {
+            total.clq = Column::NoMethod;
+            total.cmq = Column::NoMethod;
+        }
         total.clad = Column::NoMethod;
         total.cmad = Column::NoMethod;
     }
