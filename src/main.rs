@@ -388,16 +388,12 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
     let json = if text.trim_start().starts_with('{') {
         text.into_owned()
     } else if datcom::report::legacy::is_listing(&text) {
-        // A listing without result pages is no reference: read as a deck, its echo of the
-        // input cards would be run here and agree with ours.
-        if datcom::report::legacy::read_listing(&text).is_empty() {
-            let why = if text.contains("CONERR") {
-                "it stopped at input errors: see its CONERR page"
-            } else {
-                "no CHARACTERISTICS AT ANGLE OF ATTACK page"
-            };
+        // A listing without a single page of the original's (it stopped at input errors) is
+        // no reference: read as a deck, its echo of the input cards would be run here and
+        // agree with ours.
+        if !datcom::report::legacy::has_result_pages(&text) {
             eprintln!(
-                "datcom-rs: {name}: a listing of the original program without results ({why}); nothing to compare"
+                "datcom-rs: {name}: a listing of the original program without any result page (it stopped before computing: the error lines of its CONERR page say why); nothing to compare"
             );
             return Err(ExitCode::from(2));
         }

@@ -887,8 +887,11 @@ fn dynamic_derivatives(
     // With a double-delta or cranked wing the original computes none of the tails' pitch-rate
     // and α̇ terms: the fins' and body-tail pages print NDM there (docs/tail.md).
     let wing_not_straight = case.wing.as_ref().is_some_and(|w| {
-        crate::methods::wing::WingType::from_input(w.planform_type)
-            .is_some_and(|t| t != crate::methods::wing::WingType::Straight)
+        use crate::methods::wing::WingType;
+        matches!(
+            WingType::from_input(w.planform_type),
+            Some(WingType::DoubleDelta | WingType::Cranked)
+        )
     });
     let computed: Result<Dynamic, String> = (|| {
         let body = |b: &crate::methods::body::BodyAlone| {
@@ -1232,7 +1235,7 @@ pub fn run_case(case: &Case) -> CaseResults {
 /// Why a case without BUILD or PART prints the build-up and the partial output.
 const BUILD_UP_IMPLIED: &str = "a double-delta or cranked wing with a body and tails: the configuration has no lift, drag or moment method, and the pages of the build-up and the partial output (PART) are given as with BUILD and PART, as the original prints them";
 
-/// A body, a wing other than straight-tapered and a tail or fin, without BUILD or PART: the
+/// A body, a double-delta or cranked wing and a tail or fin, without BUILD or PART: the
 /// original prints the build-up and the partial output for it as if both cards were given (its
 /// configuration page has no lift, drag or moment method).
 fn build_up_implied(case: &Case) -> bool {
@@ -1240,10 +1243,16 @@ fn build_up_implied(case: &Case) -> bool {
     let tails = case.horizontal_tail.is_some()
         || case.vertical_tail.is_some()
         || case.ventral_fin.is_some();
-    let not_straight = case.wing.as_ref().is_some_and(|w| {
-        WingType::from_input(w.planform_type).is_some_and(|t| t != WingType::Straight)
+    let double_delta_or_cranked = case.wing.as_ref().is_some_and(|w| {
+        matches!(
+            WingType::from_input(w.planform_type),
+            Some(WingType::DoubleDelta | WingType::Cranked)
+        )
     });
-    case.body.is_some() && tails && not_straight && !(case.cards.build && case.cards.part)
+    case.body.is_some()
+        && tails
+        && double_delta_or_cranked
+        && !(case.cards.build && case.cards.part)
 }
 
 /// Leaves none of a page's coefficients infinite or NaN: each such value becomes none (not

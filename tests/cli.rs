@@ -204,7 +204,34 @@ fn a_listing_without_results_is_refused_not_read_as_a_deck() {
         let out = bin().args(args).output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{command}: {stderr}");
-        assert!(stderr.contains("without results"), "{command}: {stderr}");
+        assert!(
+            stderr.contains("without any result page"),
+            "{command}: {stderr}"
+        );
         assert!(out.stdout.is_empty(), "{command}");
     }
+    // Every listing has the input-checking page: one with a page of results (here of a kind
+    // the importer does not read, as lkampoli ex10's hypersonic flap pages) is a reference
+    // with nothing to compare, not a refusal.
+    let with_page = dir.join("with-page.dat");
+    std::fs::write(
+        &with_page,
+        format!(
+            "{}1                               AUTOMATED STABILITY AND CONTROL METHODS PER APRIL 1976 VERSION OF DATCOM
+                         HYPERSONIC FLAP CHARACTERISTICS
+",
+            std::fs::read_to_string(listing).unwrap()
+        ),
+    )
+    .unwrap();
+    let out = bin()
+        .args(["compare", &example(), with_page.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }

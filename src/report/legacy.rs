@@ -65,8 +65,9 @@ pub fn last_digit_unit(text: &str) -> f64 {
     10f64.powi(exp - decimals)
 }
 
-/// Lines only the original program's output (and our listing layout) has: its page title, the
-/// disclaimer it opens with, its input-error page and its echo of the input cards. A deck
+/// Lines only the original program's output (and our listing layout) has: its page title
+/// (first: the title of every result page), the disclaimer it opens with, its input-error
+/// checking page (in every listing) and its echo of the input cards. A deck
 /// has none of them (its cards are what a listing echoes, not these lines).
 const LISTING_MARKS: [&str; 4] = [
     "AUTOMATED STABILITY AND CONTROL METHODS",
@@ -79,6 +80,12 @@ const LISTING_MARKS: [&str; 4] = [
 /// before any result page (an input error), rather than a deck.
 pub fn is_listing(text: &str) -> bool {
     LISTING_MARKS.iter().any(|m| text.contains(m))
+}
+
+/// Whether a listing has any page of results (the original's page title, which a listing
+/// that stopped at input errors lacks; every listing has the CONERR page).
+pub fn has_result_pages(text: &str) -> bool {
+    text.contains(LISTING_MARKS[0])
 }
 
 /// Every FLIGHT CONDITIONS row of a listing, with its page kind.

@@ -191,6 +191,10 @@ pub struct Wake {
     pub dynamic_pressure_ratio: f64,
 }
 
+/// The distance term of the wake half-width, z_W/c = 0.68 √(CD0 (x/c + 0.15)) (DATCOM 4.4.1):
+/// below x/c = −0.15 the width has no value.
+const WAKE_WIDTH_OFFSET: f64 = 0.15;
+
 /// See [`Wake`]: the wing of exposed aspect ratio `aspect_ratio` and MAC `mac` (exposed),
 /// lift coefficient `cl` and zero-lift drag `cd0` (both on the exposed area) at wing angle
 /// `wing_alpha_deg`, the tail at `arm` and subtending `tail_angle_rad`. Subsonic. Original:
@@ -207,7 +211,7 @@ pub fn wing_wake(
     let downwash_rad = 1.62 / (PI * aspect_ratio) * cl;
     let angle = tail_angle_rad - wing_alpha_deg.to_radians() + downwash_rad;
     let x = arm * angle.cos() / (tail_angle_rad.cos() * mac);
-    let half_width = 0.68 * (cd0 * (x + 0.15)).sqrt();
+    let half_width = 0.68 * (cd0 * (x + WAKE_WIDTH_OFFSET)).sqrt();
     let centre_loss = 2.42 * cd0.sqrt() / (x + 0.3);
     let z = x * angle.tan();
     let ratio = z / half_width;
@@ -337,7 +341,11 @@ pub(crate) fn wakes_of(
                 placement.angle_rad,
             );
             if !wake.dynamic_pressure_ratio.is_finite() {
-                warnings.push(TailWarning::WakeMissesTail { wing_alpha_deg: a });
+                warnings.push(if wake.distance_over_chord + WAKE_WIDTH_OFFSET < 0.0 {
+                    TailWarning::WakeMissesTail { wing_alpha_deg: a }
+                } else {
+                    TailWarning::NoDynamicPressureRatio { wing_alpha_deg: a }
+                });
             }
             Some(wake)
         })

@@ -133,10 +133,12 @@ pub enum TailWarning {
     FinDragFrictionOnly { surface: &'static str },
     /// The wing has no zero-lift drag: no q/q∞.
     NoWingZeroLiftDrag,
-    /// At this wing angle (deg) the wing's wake leaves ahead of the tail (the distance along
-    /// it is not positive, far from the methods' range): no q/q∞ there, where the original
-    /// prints NaN.
+    /// At this wing angle (deg) the wing's wake leaves ahead of the tail: the distance along
+    /// it to the tail, x/c, is below −0.15, where the wake's half-width has no value. No q/q∞
+    /// there; the original prints NaN.
     WakeMissesTail { wing_alpha_deg: f64 },
+    /// At this wing angle (deg) the wake method gives no q/q∞ (a value that is not finite).
+    NoDynamicPressureRatio { wing_alpha_deg: f64 },
     /// The tail has no pitching moment terms (aerodynamic centre, Cm0): no CM with it.
     NoTailMoment,
     /// A double-delta or cranked wing with tails: no downwash, lift, drag or moment of the
@@ -158,6 +160,10 @@ impl fmt::Display for TailWarning {
             TailWarning::NoWingZeroLiftDrag => {
                 write!(f, "the wing has no zero-lift drag: no q/q_inf at the tail")
             }
+            TailWarning::NoDynamicPressureRatio { wing_alpha_deg } => write!(
+                f,
+                "at a wing angle of {wing_alpha_deg} deg the wake method gives no q/q_inf at the horizontal tail: no coefficients with the tail there"
+            ),
             TailWarning::WakeMissesTail { wing_alpha_deg } => write!(
                 f,
                 "at a wing angle of {wing_alpha_deg} deg the wing's wake leaves ahead of the horizontal tail (DATCOM 4.4.1's wake is for a tail behind the wing): no q/q_inf there and no coefficients with the tail (the original prints NaN)"
