@@ -886,13 +886,7 @@ fn dynamic_derivatives(
     );
     // With a double-delta or cranked wing the original computes none of the tails' pitch-rate
     // and α̇ terms: the fins' and body-tail pages print NDM there (docs/tail.md).
-    let wing_not_straight = case.wing.as_ref().is_some_and(|w| {
-        use crate::methods::wing::WingType;
-        matches!(
-            WingType::from_input(w.planform_type),
-            Some(WingType::DoubleDelta | WingType::Cranked)
-        )
-    });
+    let wing_not_straight = double_delta_or_cranked_wing(case);
     let computed: Result<Dynamic, String> = (|| {
         let body = |b: &crate::methods::body::BodyAlone| {
             dy::body_dynamic(case, b, alpha_deg).map_err(|e| e.to_string())
@@ -1239,20 +1233,24 @@ const BUILD_UP_IMPLIED: &str = "a double-delta or cranked wing with a body and t
 /// original prints the build-up and the partial output for it as if both cards were given (its
 /// configuration page has no lift, drag or moment method).
 fn build_up_implied(case: &Case) -> bool {
-    use crate::methods::wing::WingType;
     let tails = case.horizontal_tail.is_some()
         || case.vertical_tail.is_some()
         || case.ventral_fin.is_some();
-    let double_delta_or_cranked = case.wing.as_ref().is_some_and(|w| {
+    case.body.is_some()
+        && tails
+        && double_delta_or_cranked_wing(case)
+        && !(case.cards.build && case.cards.part)
+}
+
+/// The case's wing is a double delta or cranked (TYPE 2 or 3).
+fn double_delta_or_cranked_wing(case: &Case) -> bool {
+    use crate::methods::wing::WingType;
+    case.wing.as_ref().is_some_and(|w| {
         matches!(
             WingType::from_input(w.planform_type),
             Some(WingType::DoubleDelta | WingType::Cranked)
         )
-    });
-    case.body.is_some()
-        && tails
-        && double_delta_or_cranked
-        && !(case.cards.build && case.cards.part)
+    })
 }
 
 /// Leaves none of a page's coefficients infinite or NaN: each such value becomes none (not

@@ -411,6 +411,19 @@ fn page_names(r: &datcom::results::Results) -> Vec<&str> {
         .collect()
 }
 
+/// The dynamic derivatives of the first case's page `name` (the deck has DAMP).
+fn dynamic_page<'r>(
+    r: &'r datcom::results::Results,
+    name: &str,
+) -> &'r datcom::results::DynamicDerivatives {
+    r.cases[0]
+        .conditions
+        .iter()
+        .find(|c| c.configuration == name)
+        .and_then(|c| c.dynamic.as_ref())
+        .unwrap_or_else(|| panic!("no dynamic derivatives on page {name}"))
+}
+
 /// The static coefficients of the first case's page `name`.
 fn page<'r>(
     r: &'r datcom::results::Results,
@@ -475,12 +488,7 @@ fn a_ventral_fin_without_a_horizontal_tail_is_computed() {
     // With BUILD the fin's own page: its rate terms are left out (0), not an error.
     let built =
         datcom::run(&read(&format!("BUILD\n{}", finned_rocket_deck())).with_original_rules());
-    let fin = built.cases[0]
-        .conditions
-        .iter()
-        .find(|c| c.configuration == "VENTRAL FIN CONFIGURATION")
-        .and_then(|c| c.dynamic.as_ref())
-        .expect("the ventral fin's page with DAMP");
+    let fin = dynamic_page(&built, "VENTRAL FIN CONFIGURATION");
     assert!(fin.cnr.iter().all(|v| *v == Some(0.0)), "{:?}", fin.cnr);
     assert!(
         !built.cases[0]
@@ -1035,15 +1043,8 @@ fn a_forward_swept_wing_has_no_clr_and_the_original_leaves_the_fins_clp_out() {
     );
     let deck = format!("DAMP\n{deck}");
     let name = "WING-BODY-VERTICAL TAIL CONFIGURATION";
-    let dynamic = |r: &datcom::results::Results| {
-        r.cases[0]
-            .conditions
-            .iter()
-            .find(|c| c.configuration == name)
-            .and_then(|c| c.dynamic.clone())
-            .expect("the configuration's dynamic derivatives")
-    };
-    let original = dynamic(&datcom::run(&read(&deck).with_original_rules()));
+    let original_run = datcom::run(&read(&deck).with_original_rules());
+    let original = dynamic_page(&original_run, name);
     let per_deg = |v: Option<f64>| v.map(f64::to_radians);
     for (k, clp) in [-5.668e-3, -5.716e-3, -5.854e-3, -4.921e-3, -2.874e-3]
         .into_iter()
@@ -1058,7 +1059,8 @@ fn a_forward_swept_wing_has_no_clr_and_the_original_leaves_the_fins_clp_out() {
     );
     // The library's default keeps the fin's roll damping (away from 0°, where its arm
     // vanishes) and has no CLR either.
-    let default = dynamic(&datcom::run(&read(&deck)));
+    let default_run = datcom::run(&read(&deck));
+    let default = dynamic_page(&default_run, name);
     assert!(default.no_method.contains(&"CLR"));
     let fin_term = per_deg(default.clp[4]).zip(per_deg(original.clp[4]));
     assert!(
@@ -1102,39 +1104,26 @@ fn a_cranked_wing_with_tails_has_its_sideslip_and_rate_derivatives_and_the_build
     {
         agrees(per_deg(s.clb[k]), clb, 1e-6);
     }
-    let d = r.cases[0]
-        .conditions
-        .iter()
-        .find(|c| c.configuration == whole)
-        .and_then(|c| c.dynamic.as_ref())
-        .expect("DAMP");
+    let d = dynamic_page(&r, whole);
     for (k, clp, cnr) in [(0, -6.086e-3, -4.084e-3), (4, -4.077e-3, -5.377e-3)] {
         agrees(per_deg(d.clp[k]), clp, 1e-6);
         agrees(per_deg(d.cnr[k]), cnr, 1e-6);
     }
     // The tails' pitch-rate and α̇ terms: none with such a wing; the wing-body-vertical tail
     // has the wing-body's CLQ and CMQ.
-    let dynamic = |name: &str| {
-        r.cases[0]
-            .conditions
-            .iter()
-            .find(|c| c.configuration == name)
-            .and_then(|c| c.dynamic.clone())
-            .unwrap_or_else(|| panic!("{name}: DAMP"))
-    };
     for name in [
         "VERTICAL TAIL CONFIGURATION",
         "BODY-HORIZONTAL TAIL CONFIGURATION",
         "BODY-VERTICAL TAIL CONFIGURATION",
         whole,
     ] {
-        let d = dynamic(name);
+        let d = dynamic_page(&r, name);
         assert!(
             d.no_method.contains(&"CLQ") && d.no_method.contains(&"CMQ"),
             "{name}"
         );
     }
-    let wbv = dynamic("WING-BODY-VERTICAL TAIL CONFIGURATION");
+    let wbv = dynamic_page(&r, "WING-BODY-VERTICAL TAIL CONFIGURATION");
     agrees(per_deg(wbv.clq[0]), 1.830e-2, 1e-5);
     agrees(per_deg(wbv.cmq[0]), -1.689e-2, 1e-5);
     // The build-up's wing-body page.

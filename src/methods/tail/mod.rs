@@ -471,7 +471,6 @@ pub fn configuration(
             tail.surface.terms.planform.semispan,
         );
         if !straight {
-            horizontal_tail = Some(tail);
             wbh = Some(Coefficients::none(n));
             wbhv = has_fin.then(|| Coefficients::none(n));
         } else {
@@ -514,11 +513,11 @@ pub fn configuration(
                     page.cma_per_rad.clone(),
                 ));
             }
-            horizontal_tail = Some(tail);
             tb = Some(t);
             first_slopes = first;
             wbh = Some(page);
         }
+        horizontal_tail = Some(tail);
     }
     Ok(ConfigurationTotals {
         reference_area: wb.reference_area,
