@@ -59,6 +59,12 @@ enum ForwardSweepRule {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum TailSlopeRule {
+    Handbook,
+    Original,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum MaximumRule {
     Greatest,
     LastRise,
@@ -103,9 +109,15 @@ struct Rules {
     /// docs/differences.md).
     #[arg(long = "forward-sweep", value_enum, default_value = "handbook")]
     forward_sweep: ForwardSweepRule,
+    /// The lift-curve slope a low-aspect-ratio straight horizontal tail takes into its
+    /// combinations with the body and wing: DATCOM 4.1.3.2's (default), or as the original
+    /// program has it (the slope of the tail's lift curve at the schedule's first angle; to
+    /// reproduce its listings; docs/differences.md).
+    #[arg(long = "tail-slope", value_enum, default_value = "handbook")]
+    tail_slope: TailSlopeRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,
     /// 5-digit and 6A readings, section maximum, zero-lift angle, forward-swept aerodynamic
-    /// centre), whatever the other options say.
+    /// centre, low-aspect-ratio tail slope), whatever the other options say.
     #[arg(long)]
     original: bool,
 }
@@ -114,7 +126,7 @@ impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
         use datcom::case::{
             FiveDigitReading, ForwardSweepReading, MaximumReading, SectionReynolds, SixAReading,
-            ZeroLiftReading,
+            TailSlopeReading, ZeroLiftReading,
         };
         if self.original {
             return deck.with_original_rules();
@@ -142,6 +154,10 @@ impl Rules {
         .with_forward_sweep_reading(match self.forward_sweep {
             ForwardSweepRule::Handbook => ForwardSweepReading::Handbook,
             ForwardSweepRule::Original => ForwardSweepReading::Original,
+        })
+        .with_tail_slope_reading(match self.tail_slope {
+            TailSlopeRule::Handbook => TailSlopeReading::Handbook,
+            TailSlopeRule::Original => TailSlopeReading::Original,
         })
     }
 }

@@ -611,12 +611,14 @@ fn wing_body_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
     section: Option<&SectionCharacteristics>,
+    slope_per_rad: Option<f64>,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    let w = crate::methods::wing_body::wing_body_with_section(
+    let w = crate::methods::wing_body::wing_body_with_slope(
         case,
         condition_index,
         alpha_deg,
         section,
+        slope_per_rad,
     )
     .map_err(|e| format!("wing-body: {e}"))?;
     let mut warnings: Vec<String> = w
@@ -862,8 +864,18 @@ fn body_horizontal_tail_coefficients(
     let section = crate::methods::wing::computed_wing_section(&proxy)
         .transpose()
         .map_err(|e| format!("body-horizontal tail: {e}"))?;
-    let (s, warnings) =
-        wing_body_coefficients(&proxy, condition_index, alpha_deg, section.as_ref())?;
+    // The tail's lift-curve slope as its own rules give it (the first angle's with
+    // `TailSlopeReading::Original` for a low-aspect-ratio straight tail), as in the
+    // configuration.
+    let tail = crate::methods::tail::horizontal_tail_alone(case, condition_index, alpha_deg)
+        .map_err(|e| format!("body-horizontal tail: {e}"))?;
+    let (s, warnings) = wing_body_coefficients(
+        &proxy,
+        condition_index,
+        alpha_deg,
+        section.as_ref(),
+        Some(tail.slope_per_rad),
+    )?;
     let label = |w: String| w.replacen("wing-body", "body-horizontal tail", 1);
     Ok((s, warnings.into_iter().map(label).collect()))
 }
@@ -1404,7 +1416,9 @@ fn compute_case(case: &Case) -> CaseResults {
                     LOW_ASPECT_RATIO => low_aspect_ratio_coefficients(case, &c, &f.alpha_deg),
                     BODY_ALONE => body_alone_coefficients(case, &c, &f.alpha_deg),
                     WING_ALONE => wing_alone_coefficients(case, index, &f.alpha_deg, wing_section),
-                    WING_BODY => wing_body_coefficients(case, index, &f.alpha_deg, wing_section),
+                    WING_BODY => {
+                        wing_body_coefficients(case, index, &f.alpha_deg, wing_section, None)
+                    }
                     HORIZONTAL_TAIL => horizontal_tail_coefficients(case, index, &f.alpha_deg),
                     VERTICAL_TAIL => {
                         let fin = crate::methods::lateral::Fin::VerticalTail;

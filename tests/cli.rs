@@ -167,6 +167,10 @@ fn original_is_every_original_rule_at_once() {
         "last-rise",
         "--zero-lift",
         "original",
+        "--forward-sweep",
+        "original",
+        "--tail-slope",
+        "original",
     ]);
     assert_eq!(all, one_by_one);
     assert_ne!(

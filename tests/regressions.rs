@@ -1138,3 +1138,54 @@ fn a_cranked_wing_with_tails_has_its_sideslip_and_rate_derivatives_and_the_build
     assert!(!curved.cases[0].warnings.iter().any(|w| w.contains(implied)));
     assert_eq!(page_names(&curved).len(), 1, "{:?}", page_names(&curved));
 }
+
+/// The JSBSim P-51's body, wing and horizontal tail (a low-aspect-ratio straight tail at 2°
+/// incidence) with BUILD, at Mach 0.28 on the angles `schedule`.
+fn low_aspect_ratio_tail_deck(schedule: &str) -> String {
+    let n = schedule.split(',').filter(|a| !a.trim().is_empty()).count();
+    format!(
+        " $FLTCON NMACH=1.0, MACH(1)=0.28, RNNUB(1)=1986000.0,\n   \
+         NALPHA={n}.0, ALSCHD(1)={schedule},\n   NALT=1.0, ALT(1)=10.0$\n \
+         $OPTINS SREF=235.0, CBARR=6.3, BLREF=37.5$\n \
+         $SYNTHS XCG=8.25, ZCG=-1.0, XW=6.25, ZW=-2.33, ALIW=1.0,\n   \
+         XH=22.8, ZH=1.06, ALIH=2.0$\n \
+         $BODY BNOSE=2.0, BLN=2.0, NX=6.0,\n   X(1)=-3.0, -0.75, 2.0, 8.7, 20.0, 27.0,\n   \
+         R(1)=0.1, 1.25, 2.5, 3.0, 3.0, 0.4$\nNACA-W-6-63A216\n \
+         $WGPLNF CHRDTP=4.0,SSPNE=16.25,SSPN=18.75,CHRDR=8.67,SAVSI=0.0,DHDADI=5.0,\n   \
+         TYPE=1.0, TWISTA=-2.0$\nNACA-H-6-63A014\n \
+         $HTPLNF CHRDTP=2.5, SSPNE=5.7, SSPN=6.6, CHRDR=4.5, SAVSI=0.0, TYPE=1.0$\n\
+         BUILD\nCASEID P-51 reduced\n"
+    )
+}
+
+/// A low-aspect-ratio straight horizontal tail's lift-curve slope on the BODY-HORIZONTAL TAIL
+/// page. The original takes, for such a tail, the slope of its CL curve at the schedule's
+/// first angle (M33O41 skips the line that restores the analytic slope), in the page's
+/// incidence terms as in the configuration. With the schedule starting at −50°, beyond the
+/// tail's stall, its CM is 0.0103 lower than with the analytic slope at every angle (the
+/// JSBSim P-51 from −70°: 0.0187). `--tail-slope original` reproduces it; the default takes
+/// the analytic slope, the same whatever the schedule. Reference: a build of the original's
+/// public source (gfortran, outside this repository) on this deck.
+#[test]
+fn a_low_aspect_ratio_tails_slope_does_not_depend_on_the_first_angle() {
+    const PAGE: &str = "BODY-HORIZONTAL TAIL CONFIGURATION";
+    let from_beyond_stall = read(&low_aspect_ratio_tail_deck("-50.0,-5.0,0.0,5.0,10.0,14.0"));
+    let original = datcom::run(&from_beyond_stall.clone().with_original_rules());
+    let s = page(&original, PAGE);
+    for (k, cm) in [2.6399, 0.0606, -0.0670, -0.2129, -0.3817, -0.4831]
+        .into_iter()
+        .enumerate()
+    {
+        agrees(s.cm[k], cm, 1e-4);
+    }
+    agrees(s.cl[0], -0.383, 1e-3);
+    // The default: the same CM at 0° whatever the first angle.
+    let from_minus_five = read(&low_aspect_ratio_tail_deck("-5.0,0.0,5.0,10.0,14.0"));
+    let analytic = page(&datcom::run(&from_minus_five), PAGE).cm[1].expect("a CM at 0°");
+    let ours = page(&datcom::run(&from_beyond_stall), PAGE).cm[2].expect("a CM at 0°");
+    assert!((ours - analytic).abs() < 1e-12, "{ours} against {analytic}");
+    assert!(
+        (analytic - -0.0670).abs() > 0.01,
+        "the rules do not differ here"
+    );
+}

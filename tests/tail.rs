@@ -14,7 +14,7 @@ mod common;
 
 use std::collections::BTreeMap;
 
-use datcom::case::{Case, Deck, SectionReynolds};
+use datcom::case::{Case, Deck, SectionReynolds, TailSlopeReading};
 use datcom::charts;
 use datcom::methods::body::subsonic_limit;
 use datcom::methods::tail::{
@@ -369,6 +369,10 @@ fn run_oracle(decks: &[(String, Deck, String)], rule: SectionReynolds, tally: &m
         for (ci, (case, listing)) in deck.cases.iter().zip(&listings).enumerate() {
             let mut case = case.clone();
             case.section_reynolds = rule;
+            // Against the original's listings: its reading of a low-aspect-ratio straight
+            // tail's slope (the first angle's; the library's default is the analytic slope,
+            // docs/differences.md), whichever section Reynolds number.
+            case.tail_slope = TailSlopeReading::Original;
             let case = &case;
             let group = if complete_wing_inputs(case) {
                 "complete"

@@ -22,6 +22,7 @@ use crate::error::{DeckProblem, Diagnostic, Severity};
 use crate::geometry::planform::{EXPOSED_SPAN_TOLERANCE, RIGHT_ANGLE_DEG};
 use crate::geometry::section::SectionError;
 pub use crate::methods::section::MaximumReading;
+pub use crate::methods::tail::TailSlopeReading;
 pub use crate::methods::wing::{ForwardSweepReading, ZeroLiftReading};
 
 /// Every value of a case by the [`schema::key`]s of its namelist's and its own name, sorted:
@@ -504,6 +505,9 @@ pub struct Case {
     pub zero_lift: ZeroLiftReading,
     /// How a forward-swept wing's aerodynamic centre is read (see [`ForwardSweepReading`]).
     pub forward_sweep: ForwardSweepReading,
+    /// Which lift-curve slope a low-aspect-ratio straight horizontal tail takes into its
+    /// combinations (see [`TailSlopeReading`]).
+    pub tail_slope: TailSlopeReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -588,10 +592,16 @@ impl Deck {
         self.each_case(|c| c.forward_sweep = reading)
     }
 
+    /// The same deck with every case's low-aspect-ratio straight horizontal tail taking its
+    /// lift-curve slope by `reading`.
+    pub fn with_tail_slope_reading(self, reading: TailSlopeReading) -> Deck {
+        self.each_case(|c| c.tail_slope = reading)
+    }
+
     /// The same deck with the original program's rules (its section Reynolds number, its
     /// 5-digit and 6A readings, its search for a section's maximum thickness and camber, its
     /// reading of the wing's zero-lift angle and of a forward-swept wing's aerodynamic
-    /// centre), to reproduce its listings.
+    /// centre, its low-aspect-ratio horizontal tail's slope), to reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
@@ -599,6 +609,7 @@ impl Deck {
             .with_section_maximum(MaximumReading::LastRise)
             .with_zero_lift_reading(ZeroLiftReading::Original)
             .with_forward_sweep_reading(ForwardSweepReading::Original)
+            .with_tail_slope_reading(TailSlopeReading::Original)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -983,6 +994,7 @@ impl Case {
             six_a,
             zero_lift,
             forward_sweep,
+            tail_slope,
             cards,
             flight,
             reference,
@@ -1014,6 +1026,7 @@ impl Case {
             six_a: *six_a,
             zero_lift: *zero_lift,
             forward_sweep: *forward_sweep,
+            tail_slope: *tail_slope,
             cards: cards.clone(),
             flight: flight.clone(),
             reference: reference.clone(),
@@ -1082,6 +1095,7 @@ impl Case {
             six_a: SixAReading::default(),
             zero_lift: ZeroLiftReading::default(),
             forward_sweep: ForwardSweepReading::default(),
+            tail_slope: TailSlopeReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),
@@ -1247,6 +1261,7 @@ impl Case {
             six_a: SixAReading::default(),
             zero_lift: ZeroLiftReading::default(),
             forward_sweep: ForwardSweepReading::default(),
+            tail_slope: TailSlopeReading::default(),
             cards: Cards::default(),
             flight: None,
             reference: Reference::default(),

@@ -64,7 +64,8 @@ pub use downwash::{
 };
 pub use surfaces::{
     fin_zero_lift_drag, horizontal_tail_alone, low_speed_wing, tail_as_wing, tail_position,
-    FinZeroLiftDrag, HorizontalTailAlone, LowSpeedWing, TAIL_NOT_APPLICABLE_SLOPE_CHANGE,
+    FinZeroLiftDrag, HorizontalTailAlone, LowSpeedWing, TailSlopeReading,
+    TAIL_NOT_APPLICABLE_SLOPE_CHANGE,
 };
 pub use tail_body::{tail_body, TailAtAngle, TailBody, TailBodyInputs};
 

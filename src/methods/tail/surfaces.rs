@@ -25,6 +25,22 @@ use crate::results::planform_area_and_mac;
 /// on (the original's M33O41 test for the horizontal tail; the wing's is 90 %).
 pub const TAIL_NOT_APPLICABLE_SLOPE_CHANGE: f64 = 0.075;
 
+/// Which lift-curve slope a low-aspect-ratio straight horizontal tail (A ≤ 6/((C1 + 1) cos
+/// Λ_LE)) takes into its combinations with the body and the wing (the incidence, body-vortex
+/// and carry-over terms, the configuration's CLα).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TailSlopeReading {
+    /// The tail's lift-curve slope of DATCOM 4.1.3.2, as for any other tail.
+    #[default]
+    Handbook,
+    /// As the original program: the slope of the tail's CL curve at the first angle of the
+    /// schedule (M33O41 skips the line that restores the analytic slope for such a tail), so
+    /// that a schedule starting beyond the stall gives the tail almost no slope. For
+    /// reproducing old listings (docs/differences.md).
+    Original,
+}
+
 /// XH and ZH after the rotation about the hinge axis HINAX (the original's INFTGM): with the
 /// tail at incidence ALIH about x = HINAX, ZH += sin ALIH (HINAX − XH) and XH = HINAX (1 −
 /// cos ALIH) + XH cos ALIH. Without HINAX, XH and ZH as given (0 when absent).
@@ -110,8 +126,9 @@ pub struct HorizontalTailAlone {
     pub xcp: Vec<Option<f64>>,
     pub cla_per_rad: Vec<Option<f64>>,
     pub cma_per_rad: Vec<Option<f64>>,
-    /// CLα_H, per rad, on the reference area: the analytic slope, or for a low-aspect-ratio
-    /// straight tail the slope of its CL curve at the first angle.
+    /// CLα_H, per rad, on the reference area, that the tail's combinations take: the analytic
+    /// slope, or for a low-aspect-ratio straight tail with [`TailSlopeReading::Original`] the
+    /// slope of its CL curve at the first angle.
     pub slope_per_rad: f64,
     /// The tail is a low-aspect-ratio straight planform (A ≤ 6/((C1 + 1) cos Λ_LE)).
     pub low_aspect_ratio_straight: bool,
@@ -121,8 +138,8 @@ pub struct HorizontalTailAlone {
 /// methods of `methods::wing` on the tail's planform ($HTPLNF), section ($HTSCHR or a NACA-H
 /// card), position (XH, ZH after HINAX) and incidence ALIH, on the case's reference area and
 /// length. Then, as the original's M33O41: for a low-aspect-ratio straight tail the first
-/// angle's CLA and CMA are the slopes of the CL and CM curves there (and so is CLα_H);
-/// otherwise CM and CMA are not applicable from the first angle whose CLA departs from the
+/// angle's CLA and CMA are the slopes of the CL and CM curves there (and so is CLα_H with
+/// [`TailSlopeReading::Original`]); otherwise CM and CMA are not applicable from the first angle whose CLA departs from the
 /// first angle's curve slope by more than 7.5 %, and the first angle keeps the analytic
 /// slopes. Validity: that of the wing methods. Original: M16O20, M05O05, M33O41.
 pub fn horizontal_tail_alone(
@@ -149,7 +166,9 @@ pub fn horizontal_tail_alone(
         if low_aspect_ratio_straight {
             cla[0] = curve_cla[0];
             cma[0] = curve_cma[0];
-            slope_per_rad = curve_cla[0].unwrap_or(analytic);
+            if case.tail_slope == TailSlopeReading::Original {
+                slope_per_rad = curve_cla[0].unwrap_or(analytic);
+            }
         } else if let Some(first) = curve_cla[0].filter(|s| *s != 0.0) {
             if let Some(from) = (1..n).find(|&k| {
                 cla[k].is_some_and(|s| (s / first - 1.0).abs() > TAIL_NOT_APPLICABLE_SLOPE_CHANGE)

@@ -254,6 +254,21 @@ pub fn wing_body_with_section(
     alpha_deg: &[f64],
     computed: Option<&SectionCharacteristics>,
 ) -> Result<WingBody, WingBodyError> {
+    wing_body_with_slope(case, condition_index, alpha_deg, computed, None)
+}
+
+/// [`wing_body_with_section`] with the surface's lift-curve slope (per rad, on the reference
+/// area) in the combination's incidence, body-vortex and carry-over terms given, instead of
+/// the wing method's analytic slope: the horizontal tail in the wing's place (the
+/// BODY-HORIZONTAL TAIL page) takes the slope its own rules give it,
+/// [`crate::methods::tail::HorizontalTailAlone::slope_per_rad`]. `None`: the analytic slope.
+pub fn wing_body_with_slope(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    computed: Option<&SectionCharacteristics>,
+    slope_per_rad: Option<f64>,
+) -> Result<WingBody, WingBodyError> {
     let body_input = case.body.as_ref().ok_or(WingBodyError::NoBody)?;
     let plan = case.wing.as_ref().ok_or(WingBodyError::NoWing)?;
     let condition = case
@@ -290,7 +305,7 @@ pub fn wing_body_with_section(
     let reference_area = wing.reference_area;
     let reference_length = wing.reference_length;
     let p = &wing.terms.planform;
-    let slope = wing.terms.lift_curve_slope.per_rad;
+    let slope = slope_per_rad.unwrap_or(wing.terms.lift_curve_slope.per_rad);
     let n = alpha_deg.len();
     let semispan = p.semispan;
     let body_width = 2.0 * (semispan - p.exposed_semispan);
