@@ -65,6 +65,12 @@ enum TailSlopeRule {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum OutboardSectionRule {
+    Uniform,
+    Original,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum MaximumRule {
     Greatest,
     LastRise,
@@ -115,9 +121,16 @@ struct Rules {
     /// reproduce its listings; docs/differences.md).
     #[arg(long = "tail-slope", value_enum, default_value = "handbook")]
     tail_slope: TailSlopeRule,
+    /// The outboard panel's section values a deck leaves unset (TOVCO, XOVCO, LERO, CMOT) on a
+    /// surface that is not straight tapered: the inboard panel's, a uniform section (default),
+    /// or as the original program has them (the computed section's, about 0 without one; to
+    /// reproduce its listings; docs/differences.md).
+    #[arg(long = "outboard-section", value_enum, default_value = "uniform")]
+    outboard_section: OutboardSectionRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,
     /// 5-digit and 6A readings, section maximum, zero-lift angle, forward-swept aerodynamic
-    /// centre, low-aspect-ratio tail slope), whatever the other options say.
+    /// centre, low-aspect-ratio tail slope, outboard section values), whatever the other
+    /// options say.
     #[arg(long)]
     original: bool,
 }
@@ -125,8 +138,8 @@ struct Rules {
 impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
         use datcom::case::{
-            FiveDigitReading, ForwardSweepReading, MaximumReading, SectionReynolds, SixAReading,
-            TailSlopeReading, ZeroLiftReading,
+            FiveDigitReading, ForwardSweepReading, MaximumReading, OutboardSectionReading,
+            SectionReynolds, SixAReading, TailSlopeReading, ZeroLiftReading,
         };
         if self.original {
             return deck.with_original_rules();
@@ -158,6 +171,10 @@ impl Rules {
         .with_tail_slope_reading(match self.tail_slope {
             TailSlopeRule::Handbook => TailSlopeReading::Handbook,
             TailSlopeRule::Original => TailSlopeReading::Original,
+        })
+        .with_outboard_section_reading(match self.outboard_section {
+            OutboardSectionRule::Uniform => OutboardSectionReading::Uniform,
+            OutboardSectionRule::Original => OutboardSectionReading::Original,
         })
     }
 }

@@ -171,6 +171,8 @@ fn original_is_every_original_rule_at_once() {
         "original",
         "--tail-slope",
         "original",
+        "--outboard-section",
+        "original",
     ]);
     assert_eq!(all, one_by_one);
     assert_ne!(

@@ -1189,3 +1189,66 @@ fn a_low_aspect_ratio_tails_slope_does_not_depend_on_the_first_angle() {
         "the rules do not differ here"
     );
 }
+
+/// A double-delta wing alone at Mach 0.2 (the inboard panel swept 50°, the outboard 20°) with
+/// the section `section` (a NACA card and, or, $WGSCHR values).
+fn double_delta_deck(section: &str) -> String {
+    format!(
+        " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=5.0, ALSCHD(1)=-4.0, 0.0, 4.0, 8.0, 12.0$\n \
+         $OPTINS SREF=2.2, CBARR=0.6, BLREF=4.0$\n \
+         $SYNTHS XCG=0.5, ZCG=0.0, XW=0.2, ZW=0.0, ALIW=0.0$\n \
+         $WGPLNF CHRDR=1.2, CHRDBP=0.6, CHRDTP=0.3, SSPN=2.0, SSPNOP=1.4, SSPNE=2.0,\n   \
+         SAVSI=50.0, SAVSO=20.0, CHSTAT=0.0, TYPE=2.0$\n{section}CASEID double delta\n"
+    )
+}
+
+/// The outboard panel's section values a deck leaves unset on a wing that is not straight
+/// tapered. The original (SECO) gives them the computed section's thickness, its position and
+/// zero-lift moment, and LERI, when there is a NACA card or coordinates, whatever the deck gives
+/// for the inboard panel (its CMO is then averaged with the computed one); without a computed
+/// section it leaves them at about 0. `--outboard-section original` reproduces both; the
+/// default takes the inboard values, a uniform section. Reference: a build of the original's
+/// public source (gfortran, outside this repository) on these decks.
+#[test]
+fn the_outboard_panels_unset_section_values_follow_the_rule() {
+    let card = read(&double_delta_deck(
+        "NACA-W-4-4412\n $WGSCHR CMO=-0.2, TOVC=0.15$\n",
+    ));
+    let original = datcom::run(&card.clone().with_original_rules());
+    let s = &original.cases[0].conditions[0].static_coefficients;
+    for (k, (cd, cm)) in [
+        (0.021, 0.0391),
+        (0.012, -0.1056),
+        (0.021, -0.2503),
+        (0.046, -0.3644),
+        (0.089, -0.4961),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        agrees(s.cd[k], cd, 1e-3);
+        agrees(s.cm[k], cm, 1e-4);
+    }
+    // The default: CMO alone (the original's is the mean of −0.2 and the 4412's −0.1).
+    let uniform = datcom::run(&card);
+    let cm = uniform.cases[0].conditions[0].static_coefficients.cm[1].expect("a CM at 0°");
+    assert!(cm < -0.13, "{cm}: the given CMO is not the whole wing's");
+
+    // Without a NACA card or coordinates the original's outboard thickness is about 0.
+    let values = read(&double_delta_deck(
+        " $WGSCHR TOVC=0.12, XOVC=0.3, LERI=0.0158, DELTAY=2.9, CLALPA(1)=0.105,\n   \
+         CLMAX(1)=1.5, CMO=-0.1, CLI=0.4, ALPHAI=0.0, CAMBER=.TRUE.$\n",
+    ));
+    let original = datcom::run(&values.clone().with_original_rules());
+    let s = &original.cases[0].conditions[0].static_coefficients;
+    for (k, ca) in [0.010, 0.011, 0.010, 0.009, 0.006].into_iter().enumerate() {
+        agrees(s.ca[k], ca, 1e-3);
+    }
+    let uniform = datcom::run(&values);
+    let ca = uniform.cases[0].conditions[0].static_coefficients.ca[4].expect("a CA at 12°");
+    assert!(
+        ca > 0.0066,
+        "{ca}: the outboard panel has the inboard's thickness"
+    );
+}

@@ -23,7 +23,7 @@ use crate::geometry::planform::{EXPOSED_SPAN_TOLERANCE, RIGHT_ANGLE_DEG};
 use crate::geometry::section::SectionError;
 pub use crate::methods::section::MaximumReading;
 pub use crate::methods::tail::TailSlopeReading;
-pub use crate::methods::wing::{ForwardSweepReading, ZeroLiftReading};
+pub use crate::methods::wing::{ForwardSweepReading, OutboardSectionReading, ZeroLiftReading};
 
 /// Every value of a case by the [`schema::key`]s of its namelist's and its own name, sorted:
 /// lookups compare integers, not names. Longer names, which no namelist or variable has, are
@@ -508,6 +508,8 @@ pub struct Case {
     /// Which lift-curve slope a low-aspect-ratio straight horizontal tail takes into its
     /// combinations (see [`TailSlopeReading`]).
     pub tail_slope: TailSlopeReading,
+    /// The outboard panel's unset section values (see [`OutboardSectionReading`]).
+    pub outboard_section: OutboardSectionReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -598,10 +600,17 @@ impl Deck {
         self.each_case(|c| c.tail_slope = reading)
     }
 
+    /// The same deck with every case's outboard panel taking the section values the deck
+    /// leaves unset by `reading`.
+    pub fn with_outboard_section_reading(self, reading: OutboardSectionReading) -> Deck {
+        self.each_case(|c| c.outboard_section = reading)
+    }
+
     /// The same deck with the original program's rules (its section Reynolds number, its
     /// 5-digit and 6A readings, its search for a section's maximum thickness and camber, its
     /// reading of the wing's zero-lift angle and of a forward-swept wing's aerodynamic
-    /// centre, its low-aspect-ratio horizontal tail's slope), to reproduce its listings.
+    /// centre, its low-aspect-ratio horizontal tail's slope, its outboard section values), to
+    /// reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
@@ -610,6 +619,7 @@ impl Deck {
             .with_zero_lift_reading(ZeroLiftReading::Original)
             .with_forward_sweep_reading(ForwardSweepReading::Original)
             .with_tail_slope_reading(TailSlopeReading::Original)
+            .with_outboard_section_reading(OutboardSectionReading::Original)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -995,6 +1005,7 @@ impl Case {
             zero_lift,
             forward_sweep,
             tail_slope,
+            outboard_section,
             cards,
             flight,
             reference,
@@ -1027,6 +1038,7 @@ impl Case {
             zero_lift: *zero_lift,
             forward_sweep: *forward_sweep,
             tail_slope: *tail_slope,
+            outboard_section: *outboard_section,
             cards: cards.clone(),
             flight: flight.clone(),
             reference: reference.clone(),
@@ -1096,6 +1108,7 @@ impl Case {
             zero_lift: ZeroLiftReading::default(),
             forward_sweep: ForwardSweepReading::default(),
             tail_slope: TailSlopeReading::default(),
+            outboard_section: OutboardSectionReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),
@@ -1262,6 +1275,7 @@ impl Case {
             zero_lift: ZeroLiftReading::default(),
             forward_sweep: ForwardSweepReading::default(),
             tail_slope: TailSlopeReading::default(),
+            outboard_section: OutboardSectionReading::default(),
             cards: Cards::default(),
             flight: None,
             reference: Reference::default(),

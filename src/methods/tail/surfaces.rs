@@ -14,9 +14,9 @@ use crate::geometry::{planform as planform_geometry, Span};
 use crate::methods::body::roughness_height;
 use crate::methods::section::{section_characteristics, surface_section};
 use crate::methods::wing::{
-    mach_zero_wing, wing_alone, wing_zero_lift_drag, Chords, DragInputs, MaxThicknessStations,
-    PanelTerms, WingAlone, WingMethodError, WingPlanform, WingType, WingZeroLiftDrag,
-    NONLINEAR_ASPECT_LIMIT,
+    mach_zero_wing, outboard_defaults, wing_alone, wing_zero_lift_drag, Chords, DragInputs,
+    MaxThicknessStations, OutboardDefaults, PanelTerms, WingAlone, WingMethodError, WingPlanform,
+    WingType, WingZeroLiftDrag, NONLINEAR_ASPECT_LIMIT,
 };
 use crate::results::planform_area_and_mac;
 
@@ -286,7 +286,17 @@ pub fn fin_zero_lift_drag(
         }
     };
     let max_thickness_x = scalar("XOVC").or(computed.as_ref().map(|c| c.max_thickness_x));
-    let outboard_max_thickness_x = scalar("XOVCO").or(max_thickness_x);
+    let outboard = outboard_defaults(
+        case.outboard_section,
+        computed.as_ref(),
+        OutboardDefaults {
+            thickness_ratio: Some(thickness_ratio),
+            max_thickness_x,
+            leading_edge_radius: Some(0.0),
+            cm0: None,
+        },
+    );
+    let outboard_max_thickness_x = scalar("XOVCO").or(outboard.max_thickness_x);
     let mut p = WingPlanform::new(
         &geometry,
         Chords {
@@ -325,7 +335,9 @@ pub fn fin_zero_lift_drag(
         reference_area,
         thickness_ratio,
         max_thickness_x,
-        outboard_thickness_ratio: scalar("TOVCO").unwrap_or(thickness_ratio),
+        outboard_thickness_ratio: scalar("TOVCO")
+            .or(outboard.thickness_ratio)
+            .unwrap_or(thickness_ratio),
         outboard_max_thickness_x,
         leading_edge_radius: 0.0,
         outboard_leading_edge_radius: 0.0,

@@ -75,7 +75,9 @@ pub use planform::{
     quarter_chord_sweep, Chords, ExtendedOutboard, MaxThicknessStations, PanelTerms, Sweep,
     WingPlanform,
 };
-pub use section_inputs::{wing_section, WingSection};
+pub use section_inputs::{
+    outboard_defaults, wing_section, OutboardDefaults, OutboardSectionReading, WingSection,
+};
 pub use zero_lift_angle::{
     twist_term_as_the_original, wing_zero_lift_angle, wing_zero_lift_angle_read, ZeroLiftAngle,
     ZeroLiftReading,

@@ -5,9 +5,62 @@
 use super::zero_lift_angle::ZeroLiftReading;
 use serde::Serialize;
 
-use super::{WingMethodError, WingWarning};
+use super::{WingMethodError, WingType, WingWarning};
 use crate::case::{Case, SectionInput};
 use crate::methods::section::{MachCharacteristics, SectionCharacteristics};
+
+/// The outboard panel's section values (TOVCO, XOVCO, LERO, CMOT) of a surface that is not
+/// straight tapered, where the deck leaves them unset.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OutboardSectionReading {
+    /// A uniform section: the inboard panel's values (the user's TOVC, XOVC, LERI, else the
+    /// section method's), and CMO alone for the zero-lift moment.
+    #[default]
+    Uniform,
+    /// As the original program (SECO): the section method's thickness, its position and
+    /// zero-lift moment (averaged with a given CMO), and LERI, when a section is computed
+    /// (NACA card or coordinates); otherwise its unset value, about 0, for TOVCO, XOVCO and
+    /// LERO. For reproducing old listings (docs/differences.md).
+    Original,
+}
+
+/// The outboard defaults of a surface that is not straight tapered: thickness ratio, its
+/// chord position, leading-edge radius and zero-lift moment (None: not averaged with CMO).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OutboardDefaults {
+    pub thickness_ratio: Option<f64>,
+    pub max_thickness_x: Option<f64>,
+    pub leading_edge_radius: Option<f64>,
+    pub cm0: Option<f64>,
+}
+
+/// The outboard panel's values where the deck leaves them unset (see
+/// [`OutboardSectionReading`]), from the inboard panel's and the section method's.
+pub fn outboard_defaults(
+    reading: OutboardSectionReading,
+    computed: Option<&SectionCharacteristics>,
+    inboard: OutboardDefaults,
+) -> OutboardDefaults {
+    match (reading, computed) {
+        (OutboardSectionReading::Uniform, _) => OutboardDefaults {
+            cm0: None,
+            ..inboard
+        },
+        (OutboardSectionReading::Original, Some(c)) => OutboardDefaults {
+            thickness_ratio: Some(c.max_thickness),
+            max_thickness_x: Some(c.max_thickness_x),
+            leading_edge_radius: inboard.leading_edge_radius,
+            cm0: Some(c.cm0),
+        },
+        (OutboardSectionReading::Original, None) => OutboardDefaults {
+            thickness_ratio: Some(0.0),
+            max_thickness_x: Some(0.0),
+            leading_edge_radius: Some(0.0),
+            cm0: None,
+        },
+    }
+}
 
 /// Section characteristics of the wing at one flight condition.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -123,8 +176,29 @@ pub fn wing_section(
             ai - cli / lift_curve_slope_per_rad.to_radians()
         });
     let cambered = user.and_then(|u| u.camber).unwrap_or(false) || computed.is_some();
+    let thickness_ratio = scalar(user, &["TOVC"]).or(computed.map(|c| c.max_thickness));
+    let max_thickness_x = scalar(user, &["XOVC"]).or(computed.map(|c| c.max_thickness_x));
+    let delta_y_percent = scalar(user, &["DELTAY"]).or(computed.map(|c| c.delta_y_percent));
+    let leading_edge_radius = scalar(user, &["LERI"]).or(computed.map(|c| c.leading_edge_radius));
+    let straight = case
+        .wing
+        .as_ref()
+        .and_then(|w| WingType::from_input(w.planform_type))
+        .is_none_or(|t| t == WingType::Straight);
+    let outboard = (!straight).then(|| {
+        outboard_defaults(
+            case.outboard_section,
+            computed,
+            OutboardDefaults {
+                thickness_ratio,
+                max_thickness_x,
+                leading_edge_radius,
+                cm0: None,
+            },
+        )
+    });
     let cmo = scalar(user, &["CMO", "CM0"]).or(computed.map(|c| c.cm0));
-    let cmot = scalar(user, &["CMOT", "CM0T"]);
+    let cmot = scalar(user, &["CMOT", "CM0T"]).or(outboard.and_then(|o| o.cm0));
     let cm0 = match (cmo, cmot) {
         (Some(a), Some(b)) if a.abs() >= CM0_GIVEN_ABOVE && b.abs() >= CM0_GIVEN_ABOVE => {
             0.5 * (a + b)
@@ -132,10 +206,6 @@ pub fn wing_section(
         (Some(a), _) => a,
         (None, _) => 0.0,
     };
-    let thickness_ratio = scalar(user, &["TOVC"]).or(computed.map(|c| c.max_thickness));
-    let max_thickness_x = scalar(user, &["XOVC"]).or(computed.map(|c| c.max_thickness_x));
-    let delta_y_percent = scalar(user, &["DELTAY"]).or(computed.map(|c| c.delta_y_percent));
-    let leading_edge_radius = scalar(user, &["LERI"]).or(computed.map(|c| c.leading_edge_radius));
     for (name, v) in [
         ("TOVC", thickness_ratio),
         ("DELTAY", delta_y_percent),
@@ -156,11 +226,14 @@ pub fn wing_section(
         cm0,
         thickness_ratio,
         max_thickness_x,
-        outboard_thickness_ratio: scalar(user, &["TOVCO"]).or(thickness_ratio),
-        outboard_max_thickness_x: scalar(user, &["XOVCO"]).or(max_thickness_x),
+        outboard_thickness_ratio: scalar(user, &["TOVCO"])
+            .or(outboard.map_or(thickness_ratio, |o| o.thickness_ratio)),
+        outboard_max_thickness_x: scalar(user, &["XOVCO"])
+            .or(outboard.map_or(max_thickness_x, |o| o.max_thickness_x)),
         delta_y_percent,
         leading_edge_radius,
-        outboard_leading_edge_radius: scalar(user, &["LERO"]).or(leading_edge_radius),
+        outboard_leading_edge_radius: scalar(user, &["LERO"])
+            .or(outboard.map_or(leading_edge_radius, |o| o.leading_edge_radius)),
         aerodynamic_centre: per_mach(user, "XAC", m).or(at_condition.and_then(|c| c.xac)),
         arcl,
     })
