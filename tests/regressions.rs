@@ -1252,3 +1252,34 @@ fn the_outboard_panels_unset_section_values_follow_the_rule() {
         "{ca}: the outboard panel has the inboard's thickness"
     );
 }
+
+/// A swept horizontal tail (30°) whose page prints its moment NA from −8° (the tail's 7.5 %
+/// rule). The original's Cnβ takes the page's moment in its centre-of-pressure term, and NA
+/// is its 2·10⁻³⁰ there: the term drops out. Ours took the wing method's moment behind the NA,
+/// and the page's CNB was 5 % high at 16° and 3.5 times too high at 0° and 4° (the JSBSim-sized
+/// transport of alibaniasad1999's deck with BUILD: CNB 266/376 → 364/376). Reference: a build
+/// of the original's public source (gfortran, outside this repository) on this deck.
+#[test]
+fn cnb_leaves_the_centre_of_pressure_out_where_the_moment_is_not_applicable() {
+    let deck = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.1, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=8.0, ALSCHD(1)=-16.0, -8.0, -4.0, 0.0, 4.0, 8.0, 12.0, 16.0$\n \
+         $OPTINS BLREF=81.68, CBARR=8.167, SREF=702.0$\n \
+         $SYNTHS XCG=39.208, ZCG=0.0, XW=28.75, ZW=-4.853, ALIW=1.3, XH=69.167, ZH=11.2,\n   \
+         ALIH=-2.0$\n \
+         $WGPLNF CHRDR=15.5, CHRDTP=4.34, CHSTAT=0.5, DHDADI=4.0, SAVSI=30.0, SSPN=40.845,\n   \
+         SSPNE=39.0, TYPE=1.0$\nNACA-W-4-2412\n \
+         $HTPLNF CHRDR=6.0, CHRDTP=1.7, CHSTAT=0.5, SAVSI=30.0, SSPN=10.535, SSPNE=10.535,\n   \
+         TYPE=1.0$\nNACA-H-4-0012\nBUILD\nCASEID swept horizontal tail\n",
+    );
+    let r = datcom::run(&deck.with_original_rules());
+    let s = page(&r, "HORIZONTAL TAIL CONFIGURATION");
+    assert!(s.cm[0].is_some() && s.cm[1..].iter().all(Option::is_none));
+    // Printed per degree (no DERIV card); the results hold them per radian.
+    let printed = [
+        2.981e-5, 1.074e-5, 3.680e-6, 3.792e-7, 3.792e-7, 3.680e-6, 1.074e-5, 2.088e-5,
+    ];
+    for (k, cnb) in printed.into_iter().enumerate() {
+        agrees(s.cnb[k].map(f64::to_radians), cnb, 0.0);
+    }
+}

@@ -220,7 +220,9 @@ pub fn horizontal_tail_lateral(
             reason: e.to_string(),
         })?;
     proxy.reference.span = body::lateral_reference_span(case);
-    wing_lateral(&proxy, condition_index, alpha_deg, &tail.surface)
+    // The tail page's moment, with its own "not applicable" rule (M33O41), in Cnβ's centre of
+    // pressure.
+    wing::surface_lateral(&proxy, condition_index, alpha_deg, &tail.surface, &tail.cm)
 }
 
 /// The sum of components' derivatives, as the original forms a configuration's: CYβ and Cnβ

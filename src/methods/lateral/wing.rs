@@ -271,7 +271,8 @@ pub(super) fn panel_sweep_and_aspect_roll(
 ///   8cos²Λ) · [1/(4πA) − |tan Λ|/(πA(A + 4cos Λ))·(cos Λ − A/2 − A²/(8cos Λ) + 6 x̄ |sin Λ|/A)]
 ///   · CL² · b_w S/(b S_exposed) per degree, the DATCOM 5.1.3.1 form with x̄ = (CM/CN)/c̄ (the
 ///   original divides the centre of pressure, already in reference lengths, by c̄ once more, in
-///   feet, its working length unit, whatever the deck's DIM);
+///   feet, its working length unit, whatever the deck's DIM; x̄ = 0 where the page's CM is not
+///   applicable, as the original's NA, 2·10⁻³⁰ in the moment's place, leaves it);
 /// - Clβ, straight wings with A ≥ 1 and uniform dihedral (equation b):
 ///   [CL·S/S_w·((Clβ/CL)_Λ K_MΛ + (Clβ/CL)_A) + θ tan Λc/4,i ΔClβ/(θ tan Λc/4) + Γ (Clβ/Γ) K_MΓ]
 ///   · S_w/S · b_w/b; with a dihedral break (SSPNDD) the dihedral term is that of figure
@@ -289,6 +290,18 @@ pub fn wing_lateral(
     condition_index: usize,
     alpha_deg: &[f64],
     wing: &WingAlone,
+) -> Result<Lateral, LateralError> {
+    surface_lateral(case, condition_index, alpha_deg, wing, &wing.cm)
+}
+
+/// [`wing_lateral`] with the page's moment `cm` (its own "not applicable" rows) in Cnβ's
+/// centre of pressure: the horizontal tail's page takes the tail's rule (M33O41).
+pub(super) fn surface_lateral(
+    case: &Case,
+    condition_index: usize,
+    alpha_deg: &[f64],
+    wing: &WingAlone,
+    cm: &[Option<f64>],
 ) -> Result<Lateral, LateralError> {
     let WingInputs {
         plan,
@@ -355,16 +368,11 @@ pub fn wing_lateral(
             let cl = wing.cl[k]?;
             let b = b_ref?;
             let cn = wing.cn[k]?;
-            let centre = if cn == 0.0 {
-                0.0
-            } else {
-                // The moment the method computed, also where the page prints NA (the
-                // original keeps the value behind its NA).
-                let cm = wing.cm[k].or_else(|| {
-                    let m = wing.terms.pitching_moment.as_ref()?;
-                    m.cm.get(k).copied().filter(|v| v.is_finite())
-                })?;
-                6.0 * (cm / cn / chord_in_feet) * sin_q.abs() / a
+            // Where the page's moment is not applicable (NA) the centre of pressure is left
+            // out: the original's NA is its 2·10⁻³⁰ in the moment's place.
+            let centre = match cm.get(k).copied().flatten() {
+                Some(cm) if cn != 0.0 => 6.0 * (cm / cn / chord_in_feet) * sin_q.abs() / a,
+                _ => 0.0,
             };
             let bracket = 1.0 / (4.0 * PI * a)
                 - tan_q.abs() / (PI * a * (a + 4.0 * cos_q))
