@@ -611,14 +611,14 @@ fn wing_body_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
     section: Option<&SectionCharacteristics>,
-    slope_per_rad: Option<f64>,
+    in_place: Option<crate::methods::wing_body::SurfaceInPlace>,
 ) -> Result<(StaticCoefficients, Vec<String>), String> {
-    let w = crate::methods::wing_body::wing_body_with_slope(
+    let w = crate::methods::wing_body::wing_body_with_surface(
         case,
         condition_index,
         alpha_deg,
         section,
-        slope_per_rad,
+        in_place,
     )
     .map_err(|e| format!("wing-body: {e}"))?;
     let mut warnings: Vec<String> = w
@@ -864,17 +864,23 @@ fn body_horizontal_tail_coefficients(
     let section = crate::methods::wing::computed_wing_section(&proxy)
         .transpose()
         .map_err(|e| format!("body-horizontal tail: {e}"))?;
-    // The tail's lift-curve slope as its own rules give it (the first angle's with
-    // `TailSlopeReading::Original` for a low-aspect-ratio straight tail), as in the
-    // configuration.
+    // The tail as its own page has it: its moment with the tail's "not applicable" rule, and
+    // its lift-curve slope (the first angle's with `TailSlopeReading::Original` for a
+    // low-aspect-ratio straight tail), as in the configuration.
     let tail = crate::methods::tail::horizontal_tail_alone(case, condition_index, alpha_deg)
         .map_err(|e| format!("body-horizontal tail: {e}"))?;
+    let mut surface = tail.surface;
+    surface.cm = tail.cm;
+    let in_place = crate::methods::wing_body::SurfaceInPlace {
+        surface,
+        slope_per_rad: tail.slope_per_rad,
+    };
     let (s, warnings) = wing_body_coefficients(
         &proxy,
         condition_index,
         alpha_deg,
         section.as_ref(),
-        Some(tail.slope_per_rad),
+        Some(in_place),
     )?;
     let label = |w: String| w.replacen("wing-body", "body-horizontal tail", 1);
     Ok((s, warnings.into_iter().map(label).collect()))

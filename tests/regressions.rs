@@ -1259,19 +1259,25 @@ fn the_outboard_panels_unset_section_values_follow_the_rule() {
 /// and the page's CNB was 5 % high at 16° and 3.5 times too high at 0° and 4° (the JSBSim-sized
 /// transport of alibaniasad1999's deck with BUILD: CNB 266/376 → 364/376). Reference: a build
 /// of the original's public source (gfortran, outside this repository) on this deck.
-#[test]
-fn cnb_leaves_the_centre_of_pressure_out_where_the_moment_is_not_applicable() {
-    let deck = read(
+/// alibaniasad1999's transport reduced to its wing and swept horizontal tail, with `body` (a
+/// $BODY namelist, or nothing) and BUILD.
+fn swept_tail_deck(body: &str) -> String {
+    format!(
         " $FLTCON NMACH=1.0, MACH(1)=0.1, NALT=1.0, ALT(1)=0.0,\n   \
          NALPHA=8.0, ALSCHD(1)=-16.0, -8.0, -4.0, 0.0, 4.0, 8.0, 12.0, 16.0$\n \
          $OPTINS BLREF=81.68, CBARR=8.167, SREF=702.0$\n \
          $SYNTHS XCG=39.208, ZCG=0.0, XW=28.75, ZW=-4.853, ALIW=1.3, XH=69.167, ZH=11.2,\n   \
          ALIH=-2.0$\n \
          $WGPLNF CHRDR=15.5, CHRDTP=4.34, CHSTAT=0.5, DHDADI=4.0, SAVSI=30.0, SSPN=40.845,\n   \
-         SSPNE=39.0, TYPE=1.0$\nNACA-W-4-2412\n \
+         SSPNE=39.0, TYPE=1.0$\nNACA-W-4-2412\n{body}\
          $HTPLNF CHRDR=6.0, CHRDTP=1.7, CHSTAT=0.5, SAVSI=30.0, SSPN=10.535, SSPNE=10.535,\n   \
-         TYPE=1.0$\nNACA-H-4-0012\nBUILD\nCASEID swept horizontal tail\n",
-    );
+         TYPE=1.0$\nNACA-H-4-0012\nBUILD\nCASEID swept horizontal tail\n"
+    )
+}
+
+#[test]
+fn cnb_leaves_the_centre_of_pressure_out_where_the_moment_is_not_applicable() {
+    let deck = read(&swept_tail_deck(""));
     let r = datcom::run(&deck.with_original_rules());
     let s = page(&r, "HORIZONTAL TAIL CONFIGURATION");
     assert!(s.cm[0].is_some() && s.cm[1..].iter().all(Option::is_none));
@@ -1281,5 +1287,38 @@ fn cnb_leaves_the_centre_of_pressure_out_where_the_moment_is_not_applicable() {
     ];
     for (k, cnb) in printed.into_iter().enumerate() {
         agrees(s.cnb[k].map(f64::to_radians), cnb, 0.0);
+    }
+}
+
+/// The same tail with a body: the BODY-HORIZONTAL TAIL page's moment is not applicable where
+/// the tail's own page's is not (the original's WBCM carries the tail's NA into the
+/// combination). Ours took the wing method's moment on the tail, with the wing's rule, and
+/// printed a CM (and XCP, CMA) at every angle where the original prints NA from −8°.
+/// Reference: a build of the original's public source (gfortran, outside this repository).
+#[test]
+fn the_body_tail_moment_is_not_applicable_where_the_tails_is_not() {
+    let deck = read(&swept_tail_deck(
+        " $BODY NX=4.0, X(1)=0.0, 10.0, 60.0, 80.0, R(1)=0.0, 4.0, 4.0, 1.0$\n",
+    ));
+    let r = datcom::run(&deck.with_original_rules());
+    let s = page(&r, "BODY-HORIZONTAL TAIL CONFIGURATION");
+    agrees(s.cm[0], 0.3165, 1e-4);
+    assert!(s.cm[1..].iter().all(Option::is_none), "{:?}", s.cm);
+    assert!(s.xcp[1..].iter().all(Option::is_none), "{:?}", s.xcp);
+    for (k, (cd, cl)) in [
+        (0.022, -0.146),
+        (0.012, -0.088),
+        (0.009, -0.051),
+        (0.007, -0.015),
+        (0.008, 0.019),
+        (0.010, 0.055),
+        (0.014, 0.092),
+        (0.019, 0.127),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        agrees(s.cd[k], cd, 1e-3);
+        agrees(s.cl[k], cl, 1e-3);
     }
 }

@@ -254,20 +254,28 @@ pub fn wing_body_with_section(
     alpha_deg: &[f64],
     computed: Option<&SectionCharacteristics>,
 ) -> Result<WingBody, WingBodyError> {
-    wing_body_with_slope(case, condition_index, alpha_deg, computed, None)
+    wing_body_with_surface(case, condition_index, alpha_deg, computed, None)
 }
 
-/// [`wing_body_with_section`] with the surface's lift-curve slope (per rad, on the reference
-/// area) in the combination's incidence, body-vortex and carry-over terms given, instead of
-/// the wing method's analytic slope: the horizontal tail in the wing's place (the
-/// BODY-HORIZONTAL TAIL page) takes the slope its own rules give it,
-/// [`crate::methods::tail::HorizontalTailAlone::slope_per_rad`]. `None`: the analytic slope.
-pub fn wing_body_with_slope(
+/// The horizontal tail in the wing's place (the BODY-HORIZONTAL TAIL page): the tail alone as
+/// its own page has it (its moment with the tail's "not applicable" rule, M33O41) and the
+/// lift-curve slope its rules give it ([`crate::methods::tail::HorizontalTailAlone`]).
+#[derive(Debug, Clone)]
+pub struct SurfaceInPlace {
+    pub surface: WingAlone,
+    /// Per rad, on the reference area: the slope of the combination's incidence, body-vortex
+    /// and carry-over terms.
+    pub slope_per_rad: f64,
+}
+
+/// [`wing_body_with_section`] with the surface alone given (`None`: the wing method on the
+/// case's wing, with its analytic slope).
+pub fn wing_body_with_surface(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
     computed: Option<&SectionCharacteristics>,
-    slope_per_rad: Option<f64>,
+    in_place: Option<SurfaceInPlace>,
 ) -> Result<WingBody, WingBodyError> {
     let body_input = case.body.as_ref().ok_or(WingBodyError::NoBody)?;
     let plan = case.wing.as_ref().ok_or(WingBodyError::NoWing)?;
@@ -292,8 +300,14 @@ pub fn wing_body_with_slope(
             reason: e.to_string(),
         })?;
     let body = body_alone(case, &shape, condition, alpha_deg).map_err(WingBodyError::Body)?;
-    let wing = wing_alone_with_section(case, condition_index, alpha_deg, computed)
-        .map_err(WingBodyError::Wing)?;
+    let (wing, slope_per_rad) = match in_place {
+        Some(t) => (t.surface, Some(t.slope_per_rad)),
+        None => (
+            wing_alone_with_section(case, condition_index, alpha_deg, computed)
+                .map_err(WingBodyError::Wing)?,
+            None,
+        ),
+    };
     let mut warnings: Vec<WingBodyWarning> = Vec::new();
     warnings.extend(body.warnings.iter().cloned().map(WingBodyWarning::Body));
     warnings.extend(wing.warnings.iter().cloned().map(WingBodyWarning::Wing));
