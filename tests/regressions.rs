@@ -1322,3 +1322,64 @@ fn the_body_tail_moment_is_not_applicable_where_the_tails_is_not() {
         agrees(s.cl[k], cl, 1e-3);
     }
 }
+
+/// A coordinate table that stops short of the trailing edge (alibaniasad1999's transport and
+/// its copy: XCORD ends at 0.97905). The original takes the last station as the trailing
+/// edge (XYCORD zeroes its thickness and camber) and computes; we refused the deck with an
+/// error, and those two corpus decks had no wing. Now a warning, and the section's values
+/// are the original's. Reference: a build of the original's public source (gfortran, outside
+/// this repository) on this deck.
+#[test]
+fn a_section_table_short_of_the_trailing_edge_is_closed_at_its_last_station() {
+    let text = " $FLTCON NMACH=1.0, MACH(1)=0.1, NALT=1.0, ALT(1)=0.0,\n   \
+        NALPHA=3.0, ALSCHD(1)=-4.0, 0.0, 4.0$\n \
+        $OPTINS BLREF=81.68, CBARR=8.167, SREF=702.0$\n \
+        $WGPLNF CHRDR=15.5, CHRDTP=4.34, CHSTAT=0.5, SAVSI=30.0, SSPN=40.845, SSPNE=39.0,\n   \
+        TYPE=1.0$\n \
+        $WGSCHR NPTS=24.0, TYPEIN=1.0, XCORD(1)=0.0,0.00862,0.01628,0.03092,\n   \
+        0.04524,0.06652,0.09121,0.11231,0.13339,0.17548,0.21402,0.22452,0.25253,\n   \
+        0.30152,0.35048,0.42036,0.4902,0.56003,0.62987,0.6997,0.76954,0.83938,\n   \
+        0.90921,0.97905, YLOWER(1)=0.0,-0.01569,-0.02087,-0.02743,-0.03195,-0.03689,\n   \
+        -0.04098,-0.04353,-0.04543,-0.04773,-0.04851,-0.04855,-0.04832,-0.04696,\n   \
+        -0.04461,-0.04015,-0.03556,-0.03097,-0.02638,-0.02179,-0.0172,-0.01261,\n   \
+        -0.00801,-0.00342, YUPPER(1)=0.0,0.01569,0.02087,0.02743,0.03195,0.03689,\n   \
+        0.04098,0.04353,0.04543,0.04773,0.04851,0.04855,0.04832,0.04696,0.04461,\n   \
+        0.04015,0.03556,0.03097,0.02638,0.02179,0.0172,0.01261,0.00801,0.00342$\n\
+        CASEID section short of the trailing edge\n";
+    let deck = read(text);
+    assert!(!has(&deck, Severity::Error, "XCORD"));
+    assert!(has(
+        &deck,
+        Severity::Warning,
+        "stops short of the trailing edge"
+    ));
+    let r = datcom::run(&deck.with_original_rules());
+    let c = r.cases[0]
+        .sections
+        .iter()
+        .find(|s| s.surface == datcom::deck::cards::Surface::Wing)
+        .and_then(|s| s.characteristics.as_ref())
+        .expect("the wing section's characteristics");
+    // The original's WING SECTION DEFINITION page: 0.09716 per degree at Mach 0, 0.09755 and
+    // XAC 0.24662 at Mach 0.1, thickness 0.09710, Δy 3.26462 % chord.
+    // Half a unit of the fifth decimal the page prints; XAC one unit more (the original sums
+    // its chordwise loading in single precision: ours prints 0.24663).
+    const FIFTH_DECIMAL: f64 = 5e-6;
+    const XAC_SINGLE_PRECISION: f64 = 1.5e-5;
+    let printed = |v: f64, p: f64, unit: f64| assert!((v - p).abs() <= unit, "{v} against {p}");
+    printed(c.cla_mach0_per_rad.to_radians(), 0.09716, FIFTH_DECIMAL);
+    printed(c.max_thickness, 0.09710, FIFTH_DECIMAL);
+    printed(c.delta_y_percent, 3.26462, FIFTH_DECIMAL);
+    let m = &c.per_mach[0];
+    printed(
+        m.cla_per_rad.expect("a slope").to_radians(),
+        0.09755,
+        FIFTH_DECIMAL,
+    );
+    printed(
+        m.xac.expect("an aerodynamic centre"),
+        0.24662,
+        XAC_SINGLE_PRECISION,
+    );
+    assert!(r.cases[0].conditions[0].static_coefficients.cl[1].is_some());
+}

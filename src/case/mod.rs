@@ -1341,16 +1341,22 @@ impl Case {
         use crate::geometry::section::{section_source, user_defined, NacaSection, SectionSource};
         for (name, surface) in SECTION_NAMELISTS {
             match section_source(self, surface) {
-                Some(SectionSource::User(input)) => {
-                    if let Err(e @ SectionError::UserSection { variable, .. }) = user_defined(input)
-                    {
+                Some(SectionSource::User(input)) => match user_defined(input) {
+                    Err(e @ SectionError::UserSection { variable, .. }) => {
                         let hint = (variable == "XCORD").then_some(
                             "XCORD gives the stations as fractions of the chord, increasing from 0 at the leading edge to 1 at the trailing edge",
                         );
                         let message = format!("{} section: {e}", surface.name());
                         c.push(Severity::Error, name, Some(variable), message, hint);
                     }
-                }
+                    Ok(coordinates) => {
+                        for w in coordinates.warnings {
+                            let message = format!("{} section: {w}", surface.name());
+                            c.push(Severity::Warning, name, Some("XCORD"), message, None);
+                        }
+                    }
+                    Err(_) => {}
+                },
                 Some(SectionSource::Naca(card)) => {
                     // The designation is what can be wrong; its coordinates are made when
                     // the case runs.

@@ -34,7 +34,7 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
     let kind = ordinates(input)?;
     let n = point_count(input)?;
     let x = array(input, "XCORD", n)?;
-    check_stations(x)?;
+    let warnings = check_stations(x)?;
     let (mut mean, mut half) = mean_and_half(input, kind, n)?;
     for v in [&mut mean, &mut half] {
         v[0] = 0.0;
@@ -65,7 +65,7 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
         max_thickness,
         max_thickness_x,
         leading_edge_radius: leading_edge_radius(input, x[1], half[1])?,
-        warnings: Vec::new(),
+        warnings,
     })
 }
 
@@ -143,8 +143,11 @@ fn array_or_alias<'a>(
     }
 }
 
-/// XCORD from the leading edge (0) to the trailing edge (1), strictly increasing.
-fn check_stations(x: &[f64]) -> Result<(), SectionError> {
+/// XCORD from the leading edge (0), strictly increasing, to the trailing edge (1). A last
+/// station short of 1 is taken as the trailing edge, with a warning, as the original's XYCORD
+/// takes it (its thickness and camber set to zero there, the section ending at that
+/// fraction of the chord): real decks give tables that stop short of the trailing edge.
+fn check_stations(x: &[f64]) -> Result<Vec<String>, SectionError> {
     let n = x.len();
     if x[0].abs() > END_TOLERANCE {
         return Err(problem(
@@ -155,13 +158,21 @@ fn check_stations(x: &[f64]) -> Result<(), SectionError> {
             ),
         ));
     }
-    if (x[n - 1] - 1.0).abs() > END_TOLERANCE {
+    if x[n - 1] - 1.0 > END_TOLERANCE {
         return Err(problem(
             "XCORD",
             format!(
                 "XCORD({n}) = {}: the last station is the trailing edge, 1",
                 x[n - 1]
             ),
+        ));
+    }
+    let mut warnings = Vec::new();
+    if 1.0 - x[n - 1] > END_TOLERANCE {
+        warnings.push(format!(
+            "XCORD({n}) = {}: the table stops short of the trailing edge (1); its last station \
+             is taken as the trailing edge, with no thickness or camber, as the original takes it",
+            x[n - 1]
         ));
     }
     if let Some(i) = (1..n).find(|&i| x[i] <= x[i - 1]) {
@@ -176,7 +187,7 @@ fn check_stations(x: &[f64]) -> Result<(), SectionError> {
             ),
         ));
     }
-    Ok(())
+    Ok(warnings)
 }
 
 /// Mean line and half thickness at the stations, from either kind of input.
@@ -292,8 +303,8 @@ mod tests {
         let cases = [
             (input(3.0, &x, &y, &z), "TYPEIN: 3 is not a section type"),
             (
-                input(1.0, &[0.0, 0.5, 0.9], &y, &z),
-                "XCORD: XCORD(3) = 0.9",
+                input(1.0, &[0.0, 0.5, 1.1], &y, &z),
+                "XCORD: XCORD(3) = 1.1",
             ),
             (
                 input(1.0, &[0.0, 0.5, 0.5, 1.0], &[0.0; 4], &[0.0; 4]),
@@ -307,5 +318,24 @@ mod tests {
             let e = user_defined(&s).unwrap_err().to_string();
             assert!(e.contains(why), "{e}");
         }
+    }
+
+    /// A table short of the trailing edge is closed at its last station, as the original's
+    /// XYCORD closes it, with a warning.
+    #[test]
+    fn a_table_short_of_the_trailing_edge_ends_at_its_last_station() {
+        let short = input(
+            1.0,
+            &[0.0, 0.5, 0.9],
+            &[0.0, 0.05, 0.01],
+            &[0.0, -0.05, -0.01],
+        );
+        let c = user_defined(&short).expect("read with a warning");
+        assert_eq!(c.warnings.len(), 1, "{:?}", c.warnings);
+        assert!(c.warnings[0].contains("XCORD(3) = 0.9"), "{:?}", c.warnings);
+        let last = c.rows.last().expect("rows");
+        assert_eq!((last.x, last.thickness, last.mean), (0.9, 0.0, 0.0));
+        let full = input(1.0, &[0.0, 0.5, 1.0], &[0.0, 0.05, 0.0], &[0.0, -0.05, 0.0]);
+        assert!(user_defined(&full).expect("read").warnings.is_empty());
     }
 }

@@ -204,7 +204,9 @@ impl SectionShape {
             });
         }
         let (first, last) = (self.x[0], self.x[n - 1]);
-        if first.abs() > CHORD_END_TOLERANCE || (last - 1.0).abs() > CHORD_END_TOLERANCE {
+        // A table may stop short of the trailing edge: its last station is the trailing edge
+        // (the original's XYCORD; geometry::section::user_defined warns).
+        if first.abs() > CHORD_END_TOLERANCE || last - 1.0 > CHORD_END_TOLERANCE {
             return Err(ShapeError::NotChord { first, last });
         }
         let design = self.design.map_or(vec![], |d| {
