@@ -497,14 +497,15 @@ fn values_beyond_capacity_are_reported_not_stored() {
     );
 }
 
-/// A section that cannot be made (coordinates that stop short of the trailing edge, a NACA
+/// A section that cannot be made (coordinates that run beyond the trailing edge, a NACA
 /// designation that names no section) is an error of `check`, at the variable or card; before,
-/// only the run said so, in a warning, and the deck checked clean.
+/// only the run said so, in a warning, and the deck checked clean. A table that stops short of
+/// the trailing edge is computed, as the original computes it, with a warning there.
 #[test]
 fn sections_that_cannot_be_made_are_errors_where_they_are_given() {
     let planform = " $WGPLNF CHRDR=2.0, SSPN=5.0, SSPNE=5.0, CHRDTP=1.0$\n";
     let user = format!(
-        "{MINIMAL}{planform} $WGSCHR TYPEIN=1.0, NPTS=3.0,\n  XCORD=0.0,0.5,0.98, YUPPER=0.0,0.05,0.0, YLOWER=0.0,-0.05,0.0$\n"
+        "{MINIMAL}{planform} $WGSCHR TYPEIN=1.0, NPTS=3.0,\n  XCORD=0.0,0.5,1.02, YUPPER=0.0,0.05,0.0, YLOWER=0.0,-0.05,0.0$\n"
     );
     let d = read(&user);
     let e = errors(&d);
@@ -514,12 +515,22 @@ fn sections_that_cannot_be_made_are_errors_where_they_are_given() {
     assert_eq!(e[0].variable.as_deref(), Some("XCORD"));
     assert!(
         e[0].to_string()
-            .contains("XCORD(3) = 0.98: the last station is the trailing edge, 1"),
+            .contains("XCORD(3) = 1.02: the last station is the trailing edge, 1"),
         "{}",
         e[0]
     );
-    // The same table ending at 1 is clean.
-    assert!(errors(&read(&user.replace("0.98", "1.0"))).is_empty());
+    // The same table ending at 1 is clean; ending at 0.98, a warning at the same place.
+    assert!(errors(&read(&user.replace("1.02", "1.0"))).is_empty());
+    let short = read(&user.replace("1.02", "0.98"));
+    assert!(errors(&short).is_empty());
+    let w: Vec<_> = short
+        .diagnostics
+        .iter()
+        .filter(|x| x.to_string().contains("stops short of the trailing edge"))
+        .collect();
+    assert_eq!(w.len(), 1, "{:?}", short.diagnostics);
+    assert_eq!((w[0].line, w[0].column), (5, 3));
+    assert_eq!(w[0].variable.as_deref(), Some("XCORD"));
 
     let d = read(&format!("{MINIMAL}{planform}NACA-W-5-99912\n"));
     let e = errors(&d);
