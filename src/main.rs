@@ -91,8 +91,8 @@ struct Rules {
     five_digit: FiveDigitRule,
     /// A section's maximum thickness and camber (and their positions, which the maximum-lift
     /// method reads): the greatest ordinate (default), or the original program's, the
-    /// ordinate at the last station where it rose (to reproduce its listings;
-    /// docs/section-characteristics.md).
+    /// ordinate at the last station where it rose, also the thickness its methods take for a
+    /// NACA section (to reproduce its listings; docs/section-characteristics.md).
     #[arg(long = "section-maximum", value_enum, default_value = "greatest")]
     section_maximum: MaximumRule,
     /// NACA 6A designations: NACA's definition (default), or as the original program reads

@@ -1383,3 +1383,49 @@ fn a_section_table_short_of_the_trailing_edge_is_closed_at_its_last_station() {
     );
     assert!(r.cases[0].conditions[0].static_coefficients.cl[1].is_some());
 }
+
+/// A NACA 0010 horizontal tail with a body (the Citation's, with BUILD). The original's methods
+/// take a section's thickness from its table (0.100029 at x = 0.30 for a 4-digit 10 % section,
+/// the last station where it rose), though it prints the designation's 0.10000; the wing-body
+/// drag regression stops at t/c 0.100, so the original's BODY-HORIZONTAL TAIL drag is the
+/// components' sum. We took the designation's 0.1, inside the regression, and printed a drag
+/// four times the original's at ±8°. `--section-maximum last-rise` (part of `--original`) now
+/// hands the methods the table's value. Reference: a build of the original's public source
+/// (gfortran, outside this repository) on this deck.
+#[test]
+fn the_originals_methods_take_the_tabulated_thickness() {
+    let deck = read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0,\n   \
+         NALPHA=5.0, ALSCHD(1)=-8.0, -4.0, 0.0, 4.0, 8.0$\n \
+         $OPTINS BLREF=51.7, CBARR=6.75, SREF=320.8$\n \
+         $SYNTHS XCG=21.9, ZCG=3.13, XW=23.71, ZW=3.13, ALIW=2.5,\n   \
+         XH=39.2, ZH=7.75, ALIH=0.0$\n \
+         $BODY NX=8.0, X(1)=0.0,1.0,2.7,6.0,8.8,28.5,39.4,44.8,\n   \
+         R(1)=0.0,1.3,2.1,2.7,2.8,2.7,1.3,0.0$\n \
+         $WGPLNF CHRDR=9.4, CHRDTP=3.01, CHSTAT=0.25, SAVSI=1.3, SSPN=25.85,\n   \
+         SSPNE=23.46, TYPE=1.0$\nNACA-W-5-23014\n \
+         $HTPLNF CHRDR=4.99, CHRDTP=2.48, CHSTAT=0.25, SAVSI=5.32, SSPN=9.42,\n   \
+         SSPNE=9.21, TYPE=1.0$\nNACA-H-4-0010\nBUILD\nCASEID NACA 0010 tail\n",
+    );
+    const PAGE: &str = "BODY-HORIZONTAL TAIL CONFIGURATION";
+    let original = datcom::run(&deck.clone().with_original_rules());
+    let s = page(&original, PAGE);
+    for (k, cd) in [0.014, 0.009, 0.007, 0.009, 0.014].into_iter().enumerate() {
+        agrees(s.cd[k], cd, 1e-3);
+    }
+    let tail = original.cases[0]
+        .sections
+        .iter()
+        .find(|s| s.surface == datcom::deck::cards::Surface::HorizontalTail)
+        .and_then(|s| s.characteristics.as_ref())
+        .expect("the tail section's characteristics");
+    assert_eq!(tail.max_thickness, 0.1, "the page prints the designation's");
+    assert!(
+        tail.tabulated_max_thickness > 0.1,
+        "{}",
+        tail.tabulated_max_thickness
+    );
+    // The default: the designation's thickness, inside the regression.
+    let cd = page(&datcom::run(&deck), PAGE).cd[0].expect("a CD at -8°");
+    assert!(cd > 0.03, "{cd}: the regression's drag");
+}

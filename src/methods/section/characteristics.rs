@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::{ShapeError, MIN_REYNOLDS_NUMBER, REFERENCE_REYNOLDS_NUMBER};
+use super::{MaximumReading, ShapeError, MIN_REYNOLDS_NUMBER, REFERENCE_REYNOLDS_NUMBER};
 
 /// Where a Mach number's lift-curve slope comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -143,6 +143,11 @@ pub struct SectionCharacteristics {
     pub leading_edge_radius: f64,
     /// Maximum thickness, fraction of chord (the designation's when it names one).
     pub max_thickness: f64,
+    /// The largest tabulated thickness by the shape's maximum reading, fraction of chord:
+    /// under the original's reading what its methods take as the section's t/c (its TOVC),
+    /// also for a NACA section, whose table rises a little above the designation (a 4-digit
+    /// 10 % section: 0.100029 at x = 0.30); see [`SectionCharacteristics::thickness_ratio`].
+    pub tabulated_max_thickness: f64,
     /// Station of the largest thickness ordinate, fraction of chord.
     pub max_thickness_x: f64,
     /// Largest mean-line ordinate and its station, fractions of chord (0, 0 if none is
@@ -158,4 +163,19 @@ pub struct SectionCharacteristics {
     pub max_lift: Option<super::SectionMaxLift>,
     pub crest_critical: Option<CrestCritical>,
     pub warnings: Vec<SectionWarning>,
+}
+
+impl SectionCharacteristics {
+    /// The thickness ratio the wing and tail methods take: the designation's (or the greatest
+    /// tabulated) with [`MaximumReading::Greatest`], the tabulated maximum at the last station
+    /// where it rose with [`MaximumReading::LastRise`], as the original's SECO hands its methods
+    /// (it prints the designation's). It decides, for one, whether the wing-body drag takes the
+    /// original's regression (t/c up to 0.100): a NACA 0010 tail gets it by the designation,
+    /// not by the original's table (docs/section-characteristics.md).
+    pub fn thickness_ratio(&self, reading: MaximumReading) -> f64 {
+        match reading {
+            MaximumReading::Greatest => self.max_thickness,
+            MaximumReading::LastRise => self.tabulated_max_thickness,
+        }
+    }
 }

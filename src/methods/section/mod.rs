@@ -307,6 +307,7 @@ pub fn section_characteristics_with(
         tan_half_trailing_edge_angle: tan_half_te,
         leading_edge_radius: rho,
         max_thickness: shape.max_thickness.unwrap_or(max_thickness_measured),
+        tabulated_max_thickness: max_thickness_measured,
         max_thickness_x,
         max_camber,
         max_camber_x,

@@ -276,7 +276,10 @@ pub fn fin_zero_lift_drag(
         Some(Ok(s)) => section_characteristics(&s.shape, &s.conditions, &s.overrides).ok(),
         _ => None,
     };
-    let thickness_ratio = match scalar("TOVC").or(computed.as_ref().map(|c| c.max_thickness)) {
+    let thickness_ratio = match scalar("TOVC").or(computed
+        .as_ref()
+        .map(|c| c.thickness_ratio(case.section_maximum)))
+    {
         Some(t) => t,
         None => {
             warnings.push(TailWarning::FinDragFrictionOnly {

@@ -48,7 +48,7 @@ pub fn outboard_defaults(
             ..inboard
         },
         (OutboardSectionReading::Original, Some(c)) => OutboardDefaults {
-            thickness_ratio: Some(c.max_thickness),
+            thickness_ratio: Some(c.tabulated_max_thickness),
             max_thickness_x: Some(c.max_thickness_x),
             leading_edge_radius: inboard.leading_edge_radius,
             cm0: Some(c.cm0),
@@ -176,7 +176,8 @@ pub fn wing_section(
             ai - cli / lift_curve_slope_per_rad.to_radians()
         });
     let cambered = user.and_then(|u| u.camber).unwrap_or(false) || computed.is_some();
-    let thickness_ratio = scalar(user, &["TOVC"]).or(computed.map(|c| c.max_thickness));
+    let thickness_ratio =
+        scalar(user, &["TOVC"]).or(computed.map(|c| c.thickness_ratio(case.section_maximum)));
     let max_thickness_x = scalar(user, &["XOVC"]).or(computed.map(|c| c.max_thickness_x));
     let delta_y_percent = scalar(user, &["DELTAY"]).or(computed.map(|c| c.delta_y_percent));
     let leading_edge_radius = scalar(user, &["LERI"]).or(computed.map(|c| c.leading_edge_radius));
