@@ -558,12 +558,16 @@ fn wing_body_drag(
     let body_width = 2.0 * (geometry.semispan - geometry.exposed_semispan);
     let tan_le = geometry.tan_sweep_inboard(0.0);
     let tan_te = geometry.tan_sweep_inboard(1.0);
-    let mut nose = (xw + 0.5 * body_width * tan_le) / body_width;
-    let mut after = (xw + plan.chrdr.unwrap_or(0.0) + 0.5 * body_width * tan_te) / body_width;
-    if shape.x_max_area < nose * body_width {
+    // Stations from the body's nose, as the original measures them internally.
+    let x_nose = shape.nose();
+    let x_max_area = shape.x_max_area - x_nose;
+    let mut nose = (xw - x_nose + 0.5 * body_width * tan_le) / body_width;
+    let mut after =
+        (xw - x_nose + plan.chrdr.unwrap_or(0.0) + 0.5 * body_width * tan_te) / body_width;
+    if x_max_area < nose * body_width {
         nose = nose * body_width / shape.max_diameter;
     }
-    if shape.x_max_area > after * body_width {
+    if x_max_area > after * body_width {
         after = after * body_width / shape.max_diameter;
     }
     let inputs = RegressionInputs {
