@@ -71,6 +71,12 @@ enum OutboardSectionRule {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum JorgensenDragRule {
+    Handbook,
+    Original,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum MaximumRule {
     Greatest,
     LastRise,
@@ -127,10 +133,15 @@ struct Rules {
     /// reproduce its listings; docs/differences.md).
     #[arg(long = "outboard-section", value_enum, default_value = "uniform")]
     outboard_section: OutboardSectionRule,
+    /// The body's drag due to lift in the wing-body drag with a Jorgensen body (METHOD=2): that
+    /// of the body the deck asks for (default), or as the original program has it (the
+    /// axisymmetric method's; to reproduce its listings; docs/differences.md).
+    #[arg(long = "jorgensen-drag", value_enum, default_value = "handbook")]
+    jorgensen_drag: JorgensenDragRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,
     /// 5-digit and 6A readings, section maximum, zero-lift angle, forward-swept aerodynamic
-    /// centre, low-aspect-ratio tail slope, outboard section values), whatever the other
-    /// options say.
+    /// centre, low-aspect-ratio tail slope, outboard section values, Jorgensen body's drag),
+    /// whatever the other options say.
     #[arg(long)]
     original: bool,
 }
@@ -138,8 +149,9 @@ struct Rules {
 impl Rules {
     fn apply(self, deck: datcom::Deck) -> datcom::Deck {
         use datcom::case::{
-            FiveDigitReading, ForwardSweepReading, MaximumReading, OutboardSectionReading,
-            SectionReynolds, SixAReading, TailSlopeReading, ZeroLiftReading,
+            FiveDigitReading, ForwardSweepReading, JorgensenDragReading, MaximumReading,
+            OutboardSectionReading, SectionReynolds, SixAReading, TailSlopeReading,
+            ZeroLiftReading,
         };
         if self.original {
             return deck.with_original_rules();
@@ -175,6 +187,10 @@ impl Rules {
         .with_outboard_section_reading(match self.outboard_section {
             OutboardSectionRule::Uniform => OutboardSectionReading::Uniform,
             OutboardSectionRule::Original => OutboardSectionReading::Original,
+        })
+        .with_jorgensen_drag_reading(match self.jorgensen_drag {
+            JorgensenDragRule::Handbook => JorgensenDragReading::Handbook,
+            JorgensenDragRule::Original => JorgensenDragReading::Original,
         })
     }
 }

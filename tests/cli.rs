@@ -173,6 +173,8 @@ fn original_is_every_original_rule_at_once() {
         "original",
         "--outboard-section",
         "original",
+        "--jorgensen-drag",
+        "original",
     ]);
     assert_eq!(all, one_by_one);
     assert_ne!(

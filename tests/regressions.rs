@@ -1473,3 +1473,41 @@ fn the_drag_regression_measures_from_the_bodys_nose() {
     agrees(s.cd[at(10.0)], 0.108, 5e-4);
     agrees(s.cd[at(15.0)], 0.227, 5e-4);
 }
+
+/// A Jorgensen body (METHOD=2) in the wing-body drag. The original's WBDRAG takes the body's
+/// drag due to lift from its axisymmetric routine (BODYRT, whose cross-flow term is lost when
+/// x₀ lies in the body's last interval) whatever METHOD says; `--jorgensen-drag original` (part
+/// of `--original`) does the same, the default takes Jorgensen's. th12345 DR2's
+/// WING-BODY-VERTICAL TAIL page, against the oracle's listing: CD 0.167 at 24° (0.193 by
+/// Jorgensen's body), CA −0.246.
+#[test]
+fn a_jorgensen_bodys_wing_body_drag_takes_the_axisymmetric_lift_drag() {
+    let test = "a_jorgensen_bodys_wing_body_drag_takes_the_axisymmetric_lift_drag";
+    let Some(dir) = common::shared_dir("oracle/cases", test) else {
+        return;
+    };
+    let path = dir.join("th12345__DR2_for005/input.dcm");
+    let Ok(text) = std::fs::read_to_string(&path) else {
+        eprintln!("SKIPPED {test}: {} is absent", path.display());
+        return;
+    };
+    let deck = read(&text);
+    const PAGE: &str = "WING-BODY-VERTICAL TAIL CONFIGURATION";
+    let original = datcom::run(&deck.clone().with_original_rules());
+    let s = page(&original, PAGE);
+    let last = s.cd.len() - 1;
+    // Rows -14°, 8° and 24°.
+    for (k, cd, ca) in [
+        (0, 0.112, -0.080),
+        (11, 0.048, -0.006),
+        (last, 0.167, -0.246),
+    ] {
+        agrees(s.cd[k], cd, 5e-4);
+        agrees(s.ca[k], ca, 5e-4);
+    }
+    let jorgensen = page(&datcom::run(&deck), PAGE).cd[last].expect("a CD at 24°");
+    assert!(
+        jorgensen > 0.185,
+        "{jorgensen}: Jorgensen's body's drag due to lift"
+    );
+}

@@ -24,6 +24,7 @@ use crate::geometry::section::SectionError;
 pub use crate::methods::section::MaximumReading;
 pub use crate::methods::tail::TailSlopeReading;
 pub use crate::methods::wing::{ForwardSweepReading, OutboardSectionReading, ZeroLiftReading};
+pub use crate::methods::wing_body::JorgensenDragReading;
 
 /// Every value of a case by the [`schema::key`]s of its namelist's and its own name, sorted:
 /// lookups compare integers, not names. Longer names, which no namelist or variable has, are
@@ -510,6 +511,8 @@ pub struct Case {
     pub tail_slope: TailSlopeReading,
     /// The outboard panel's unset section values (see [`OutboardSectionReading`]).
     pub outboard_section: OutboardSectionReading,
+    /// A Jorgensen body's drag due to lift in the wing-body (see [`JorgensenDragReading`]).
+    pub jorgensen_drag: JorgensenDragReading,
     pub cards: Cards,
     pub flight: Option<FlightInput>,
     pub reference: Reference,
@@ -606,11 +609,17 @@ impl Deck {
         self.each_case(|c| c.outboard_section = reading)
     }
 
+    /// The same deck with every case's wing-body taking a Jorgensen body's drag due to lift by
+    /// `reading`.
+    pub fn with_jorgensen_drag_reading(self, reading: JorgensenDragReading) -> Deck {
+        self.each_case(|c| c.jorgensen_drag = reading)
+    }
+
     /// The same deck with the original program's rules (its section Reynolds number, its
     /// 5-digit and 6A readings, its search for a section's maximum thickness and camber, its
     /// reading of the wing's zero-lift angle and of a forward-swept wing's aerodynamic
-    /// centre, its low-aspect-ratio horizontal tail's slope, its outboard section values), to
-    /// reproduce its listings.
+    /// centre, its low-aspect-ratio horizontal tail's slope, its outboard section values, its
+    /// wing-body drag with a Jorgensen body), to reproduce its listings.
     pub fn with_original_rules(self) -> Deck {
         self.with_section_reynolds(SectionReynolds::Original)
             .with_five_digit_reading(FiveDigitReading::Original)
@@ -620,6 +629,7 @@ impl Deck {
             .with_forward_sweep_reading(ForwardSweepReading::Original)
             .with_tail_slope_reading(TailSlopeReading::Original)
             .with_outboard_section_reading(OutboardSectionReading::Original)
+            .with_jorgensen_drag_reading(JorgensenDragReading::Original)
     }
 
     /// Types every case of a deck as read, adding the physical checks' diagnostics.
@@ -1006,6 +1016,7 @@ impl Case {
             forward_sweep,
             tail_slope,
             outboard_section,
+            jorgensen_drag,
             cards,
             flight,
             reference,
@@ -1039,6 +1050,7 @@ impl Case {
             forward_sweep: *forward_sweep,
             tail_slope: *tail_slope,
             outboard_section: *outboard_section,
+            jorgensen_drag: *jorgensen_drag,
             cards: cards.clone(),
             flight: flight.clone(),
             reference: reference.clone(),
@@ -1109,6 +1121,7 @@ impl Case {
             forward_sweep: ForwardSweepReading::default(),
             tail_slope: TailSlopeReading::default(),
             outboard_section: OutboardSectionReading::default(),
+            jorgensen_drag: JorgensenDragReading::default(),
             five_digit: FiveDigitReading::default(),
             cards: raw.cards.clone(),
             flight: has("FLTCON").then(|| flight(&fl)),
@@ -1276,6 +1289,7 @@ impl Case {
             forward_sweep: ForwardSweepReading::default(),
             tail_slope: TailSlopeReading::default(),
             outboard_section: OutboardSectionReading::default(),
+            jorgensen_drag: JorgensenDragReading::default(),
             cards: Cards::default(),
             flight: None,
             reference: Reference::default(),

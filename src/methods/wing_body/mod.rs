@@ -50,7 +50,9 @@ use serde::Serialize;
 use crate::case::Case;
 use crate::charts::ChartWarning;
 use crate::geometry::{body as body_geometry, planform as planform_geometry, Span};
-use crate::methods::body::{body_alone, subsonic_limit, BodyAlone, BodyMethodError, BodyWarning};
+use crate::methods::body::{
+    body_alone, subsonic_limit, BodyAlone, BodyMethodError, BodyTerms, BodyWarning,
+};
 use crate::methods::section::SectionCharacteristics;
 use crate::methods::wing::{
     computed_wing_section, wing_alone_with_section, WingAlone, WingMethodError, WingType,
@@ -255,6 +257,19 @@ pub fn wing_body_with_section(
     computed: Option<&SectionCharacteristics>,
 ) -> Result<WingBody, WingBodyError> {
     wing_body_with_surface(case, condition_index, alpha_deg, computed, None)
+}
+
+/// The body's drag due to lift in the wing-body drag when the body is computed by Jorgensen's
+/// method (METHOD=2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum JorgensenDragReading {
+    /// The drag due to lift of the body the deck asked for, Jorgensen's.
+    #[default]
+    Handbook,
+    /// As the original program: the axisymmetric method's (its WBDRAG reads BODYRT's whatever
+    /// METHOD says). For reproducing old listings (docs/differences.md).
+    Original,
 }
 
 /// The horizontal tail in the wing's place (the BODY-HORIZONTAL TAIL page): the tail alone as
@@ -530,11 +545,24 @@ fn wing_body_drag(
         body_zero.base,
         warnings,
     )?;
-    let body_lift: Vec<Option<f64>> = body
-        .cd
-        .iter()
-        .map(|c| c.map(|c| c - body_zero.total))
-        .collect();
+    let body_lift: Vec<Option<f64>> = match &body.terms {
+        // The original's WBDRAG takes the axisymmetric method's (BODYRT's) drag due to lift
+        // for a Jorgensen body.
+        BodyTerms::Jorgensen { axisymmetric, .. }
+            if case.jorgensen_drag == JorgensenDragReading::Original =>
+        {
+            axisymmetric
+                .angles
+                .iter()
+                .map(|a| Some(a.cd_lift))
+                .collect()
+        }
+        _ => body
+            .cd
+            .iter()
+            .map(|c| c.map(|c| c - body_zero.total))
+            .collect(),
+    };
     let wing_lift: Vec<Option<f64>> = (0..n).map(|k| wing_lift.cd.get(k).copied()).collect();
     let mut out = WingBodyDrag {
         zero_lift,
