@@ -437,6 +437,19 @@ fn page<'r>(
         .static_coefficients
 }
 
+/// The text of `file` under ../shared/`sub`, or None (the test says SKIPPED and why) when the
+/// shared data or the file is absent.
+fn shared_text(test: &str, sub: &str, file: &str) -> Option<String> {
+    let path = common::shared_dir(sub, test)?.join(file);
+    match std::fs::read_to_string(&path) {
+        Ok(text) => Some(text),
+        Err(_) => {
+            eprintln!("SKIPPED {test}: {} is absent", path.display());
+            None
+        }
+    }
+}
+
 /// A finned rocket without a horizontal tail (wing, body, vertical tail, ventral fin).
 fn finned_rocket_deck() -> &'static str {
     " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
@@ -996,12 +1009,8 @@ fn a_forward_swept_wing_has_an_aerodynamic_centre() {
 #[test]
 fn a_missing_value_spoils_only_the_slopes_read_through_it() {
     let test = "a_missing_value_spoils_only_the_slopes_read_through_it";
-    let Some(dir) = common::shared_dir("corpus/decks", test) else {
-        return;
-    };
-    let path = dir.join("JSBSim-Team__jsbsim__datcom__p51.inp");
-    let Ok(text) = std::fs::read_to_string(&path) else {
-        eprintln!("SKIPPED {test}: {} is absent", path.display());
+    let Some(text) = shared_text(test, "corpus/decks", "JSBSim-Team__jsbsim__datcom__p51.inp")
+    else {
         return;
     };
     assert!(text.contains("ZH=1.06"), "the deck's tail height changed");
@@ -1439,12 +1448,7 @@ fn the_originals_methods_take_the_tabulated_thickness() {
 #[test]
 fn the_drag_regression_measures_from_the_bodys_nose() {
     let test = "the_drag_regression_measures_from_the_bodys_nose";
-    let Some(dir) = common::shared_dir("oracle/cases", test) else {
-        return;
-    };
-    let path = dir.join("arktools__for005/input.dcm");
-    let Ok(text) = std::fs::read_to_string(&path) else {
-        eprintln!("SKIPPED {test}: {} is absent", path.display());
+    let Some(text) = shared_text(test, "oracle/cases", "arktools__for005/input.dcm") else {
         return;
     };
     let deck = read(&text);
@@ -1483,12 +1487,7 @@ fn the_drag_regression_measures_from_the_bodys_nose() {
 #[test]
 fn a_jorgensen_bodys_wing_body_drag_takes_the_axisymmetric_lift_drag() {
     let test = "a_jorgensen_bodys_wing_body_drag_takes_the_axisymmetric_lift_drag";
-    let Some(dir) = common::shared_dir("oracle/cases", test) else {
-        return;
-    };
-    let path = dir.join("th12345__DR2_for005/input.dcm");
-    let Ok(text) = std::fs::read_to_string(&path) else {
-        eprintln!("SKIPPED {test}: {} is absent", path.display());
+    let Some(text) = shared_text(test, "oracle/cases", "th12345__DR2_for005/input.dcm") else {
         return;
     };
     let deck = read(&text);
