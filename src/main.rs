@@ -129,8 +129,9 @@ struct Rules {
     tail_slope: TailSlopeRule,
     /// The outboard panel's section values a deck leaves unset (TOVCO, XOVCO, LERO, CMOT) on a
     /// surface that is not straight tapered: the inboard panel's, a uniform section (default),
-    /// or as the original program has them (the computed section's, about 0 without one; to
-    /// reproduce its listings; docs/differences.md).
+    /// or as the original program has them (the computed section's thickness, its position and
+    /// zero-lift moment, and LERI; about 0 without a computed section; to reproduce its
+    /// listings; docs/differences.md).
     #[arg(long = "outboard-section", value_enum, default_value = "uniform")]
     outboard_section: OutboardSectionRule,
     /// The body's drag due to lift in the wing-body drag with a Jorgensen body (METHOD=2): that

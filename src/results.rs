@@ -882,7 +882,11 @@ fn body_horizontal_tail_coefficients(
         section.as_ref(),
         Some(in_place),
     )?;
-    let label = |w: String| w.replacen("wing-body", "body-horizontal tail", 1);
+    // The tail is in the wing's place: its page's labels and moment.
+    let label = |w: String| {
+        w.replacen("wing-body", "body-horizontal tail", 1)
+            .replace("(the wing's moment is not)", "(the tail's moment is not)")
+    };
     Ok((s, warnings.into_iter().map(label).collect()))
 }
 

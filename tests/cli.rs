@@ -243,3 +243,72 @@ fn a_listing_without_results_is_refused_not_read_as_a_deck() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// Each rule flag on a deck it changes: `--X original` differs from the default, `--X`
+/// with the default's value does not. (`--original` sets every rule without reading the
+/// flags, so only this catches a flag mapped to the wrong rule.)
+#[test]
+fn each_rule_flag_changes_the_deck_it_is_about() {
+    let dir = temp_dir("rules");
+    let low_aspect_ratio_tail = " $FLTCON NMACH=1.0, MACH(1)=0.28, NALT=1.0, ALT(1)=10.0,\n   \
+        NALPHA=6.0, ALSCHD(1)=-50.0,-5.0,0.0,5.0,10.0,14.0$\n \
+        $OPTINS SREF=235.0, CBARR=6.3, BLREF=37.5$\n \
+        $SYNTHS XCG=8.25, ZCG=-1.0, XW=6.25, ZW=-2.33, ALIW=1.0, XH=22.8, ZH=1.06, ALIH=2.0$\n \
+        $BODY NX=6.0, X(1)=-3.0,-0.75,2.0,8.7,20.0,27.0, R(1)=0.1,1.25,2.5,3.0,3.0,0.4$\n\
+        NACA-W-6-63A216\n \
+        $WGPLNF CHRDTP=4.0, SSPNE=16.25, SSPN=18.75, CHRDR=8.67, SAVSI=0.0, TYPE=1.0$\n\
+        NACA-H-6-63A014\n \
+        $HTPLNF CHRDTP=2.5, SSPNE=5.7, SSPN=6.6, CHRDR=4.5, SAVSI=0.0, TYPE=1.0$\nBUILD\n";
+    let double_delta = " $FLTCON NMACH=1.0, MACH(1)=0.2, NALT=1.0, ALT(1)=0.0,\n   \
+        NALPHA=3.0, ALSCHD(1)=0.0, 4.0, 8.0$\n $OPTINS SREF=2.2, CBARR=0.6, BLREF=4.0$\n \
+        $SYNTHS XCG=0.5, ZCG=0.0, XW=0.2, ZW=0.0$\n \
+        $WGPLNF CHRDR=1.2, CHRDBP=0.6, CHRDTP=0.3, SSPN=2.0, SSPNOP=1.4, SSPNE=2.0,\n   \
+        SAVSI=50.0, SAVSO=20.0, CHSTAT=0.0, TYPE=2.0$\nNACA-W-4-4412\n \
+        $WGSCHR CMO=-0.2, TOVC=0.15$\n";
+    let jorgensen_body = " $FLTCON NMACH=1.0, MACH(1)=0.3, NALT=1.0, ALT(1)=0.0,\n   \
+        NALPHA=4.0, ALSCHD(1)=0.0, 8.0, 16.0, 24.0$\n $OPTINS SREF=300.0, CBARR=6.0, BLREF=50.0$\n \
+        $SYNTHS XCG=30.0, ZCG=0.0, XW=25.0, ZW=0.0$\n \
+        $BODY NX=5.0, X(1)=0.0,10.0,40.0,60.0,70.0, R(1)=0.0,2.5,3.0,3.0,1.0, METHOD=2.0$\n \
+        $WGPLNF CHRDR=8.0, CHRDTP=4.0, SSPN=25.0, SSPNE=22.0, SAVSI=5.0, TYPE=1.0$\n\
+        NACA-W-4-2412\n";
+    let forward_swept = " $FLTCON NMACH=1.0, MACH(1)=0.6, NALPHA=3.0, ALSCHD(1)=0.0,4.0,8.0$\n \
+        $OPTINS SREF=2.25, CBARR=0.822, BLREF=3.0$\n $SYNTHS XCG=2.6, ZCG=0.0, XW=1.7, ZW=0.0$\n \
+        $BODY NX=4.0, X(1)=0.0,0.5,3.5,4.5, R(1)=0.0,0.2,0.2,0.1$\n \
+        $WGPLNF CHRDR=1.16, CHRDTP=0.346, SSPN=1.5, SSPNE=1.29, SAVSI=-55.0, TYPE=1.0$\n\
+        NACA-W-4-0006\n";
+    for (flag, default, text) in [
+        ("--tail-slope", "handbook", low_aspect_ratio_tail),
+        ("--outboard-section", "uniform", double_delta),
+        ("--jorgensen-drag", "handbook", jorgensen_body),
+        ("--forward-sweep", "handbook", forward_swept),
+    ] {
+        let deck = dir.join(format!("{}.dcm", flag.trim_start_matches('-')));
+        std::fs::write(&deck, text).unwrap();
+        let run = |extra: &[&str]| {
+            let out = bin()
+                .arg("run")
+                .arg(&deck)
+                .args(["--format", "json"])
+                .args(extra)
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "{flag}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            out.stdout
+        };
+        let plain = run(&[]);
+        assert_ne!(
+            run(&[flag, "original"]),
+            plain,
+            "{flag} original changes nothing"
+        );
+        assert_eq!(
+            run(&[flag, default]),
+            plain,
+            "{flag} {default} is not the default"
+        );
+    }
+}

@@ -1262,12 +1262,6 @@ fn the_outboard_panels_unset_section_values_follow_the_rule() {
     );
 }
 
-/// A swept horizontal tail (30°) whose page prints its moment NA from −8° (the tail's 7.5 %
-/// rule). The original's Cnβ takes the page's moment in its centre-of-pressure term, and NA
-/// is its 2·10⁻³⁰ there: the term drops out. Ours took the wing method's moment behind the NA,
-/// and the page's CNB was 5 % high at 16° and 3.5 times too high at 0° and 4° (the JSBSim-sized
-/// transport of alibaniasad1999's deck with BUILD: CNB 266/376 → 364/376). Reference: a build
-/// of the original's public source (gfortran, outside this repository) on this deck.
 /// alibaniasad1999's transport reduced to its wing and swept horizontal tail, with `body` (a
 /// $BODY namelist, or nothing) and BUILD.
 fn swept_tail_deck(body: &str) -> String {
@@ -1284,6 +1278,12 @@ fn swept_tail_deck(body: &str) -> String {
     )
 }
 
+/// A swept horizontal tail (30°) whose page prints its moment NA from −8° (the tail's 7.5 %
+/// rule). The original's Cnβ takes the page's moment in its centre-of-pressure term, and NA
+/// is its 2·10⁻³⁰ there: the term drops out. Ours took the wing method's moment behind the NA,
+/// and the page's CNB was 5 % high at 16° and 3.5 times too high at 0° and 4° (the JSBSim-sized
+/// transport of alibaniasad1999's deck with BUILD: CNB 266/376 → 364/376). Reference: a build
+/// of the original's public source (gfortran, outside this repository) on this deck.
 #[test]
 fn cnb_leaves_the_centre_of_pressure_out_where_the_moment_is_not_applicable() {
     let deck = read(&swept_tail_deck(""));

@@ -4,6 +4,7 @@
 
 use super::{CoordinateRow, SectionCoordinates, SectionError};
 use crate::case::SectionInput;
+use crate::methods::section::SHORTEST_TRAILING_EDGE;
 
 /// A section needs the leading edge, the trailing edge and a point between.
 const MIN_POINTS: usize = 3;
@@ -29,7 +30,9 @@ fn problem(variable: &'static str, problem: String) -> SectionError {
 /// y_t = (y_u - y_l)/2), both set to zero at the first and last stations (the chord runs from
 /// the leading to the trailing edge), the mean-line slope at each station that of the parabola
 /// through the station and its neighbours (QUAD through TBFUNX), and the surfaces laid off
-/// perpendicular to the mean line. XCORD must run from 0 to 1, increasing.
+/// perpendicular to the mean line. XCORD must run from 0 to 1, increasing; a table that stops
+/// short of 1 (at [`SHORTEST_TRAILING_EDGE`] or after) is closed at its last station, with a
+/// warning, as the original's XYCORD closes it.
 pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionError> {
     let kind = ordinates(input)?;
     let n = point_count(input)?;
@@ -158,11 +161,12 @@ fn check_stations(x: &[f64]) -> Result<Vec<String>, SectionError> {
             ),
         ));
     }
-    if x[n - 1] - 1.0 > END_TOLERANCE {
+    if x[n - 1] - 1.0 > END_TOLERANCE || x[n - 1] < SHORTEST_TRAILING_EDGE {
         return Err(problem(
             "XCORD",
             format!(
-                "XCORD({n}) = {}: the last station is the trailing edge, 1",
+                "XCORD({n}) = {}: the last station is the trailing edge, 1 (a table may stop \
+                 short of it down to {SHORTEST_TRAILING_EDGE}, closed there with a warning)",
                 x[n - 1]
             ),
         ));
@@ -326,15 +330,24 @@ mod tests {
     fn a_table_short_of_the_trailing_edge_ends_at_its_last_station() {
         let short = input(
             1.0,
-            &[0.0, 0.5, 0.9],
+            &[0.0, 0.5, 0.97],
             &[0.0, 0.05, 0.01],
             &[0.0, -0.05, -0.01],
         );
         let c = user_defined(&short).expect("read with a warning");
         assert_eq!(c.warnings.len(), 1, "{:?}", c.warnings);
-        assert!(c.warnings[0].contains("XCORD(3) = 0.9"), "{:?}", c.warnings);
+        assert!(
+            c.warnings[0].contains("XCORD(3) = 0.97"),
+            "{:?}",
+            c.warnings
+        );
         let last = c.rows.last().expect("rows");
-        assert_eq!((last.x, last.thickness, last.mean), (0.9, 0.0, 0.0));
+        assert_eq!((last.x, last.thickness, last.mean), (0.97, 0.0, 0.0));
+        // Shorter than SHORTEST_TRAILING_EDGE: refused.
+        let e = user_defined(&input(1.0, &[0.0, 0.5, 0.9], &[0.0; 3], &[0.0; 3]))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("XCORD(3) = 0.9: the last station"), "{e}");
         let full = input(1.0, &[0.0, 0.5, 1.0], &[0.0, 0.05, 0.0], &[0.0, -0.05, 0.0]);
         assert!(user_defined(&full).expect("read").warnings.is_empty());
     }

@@ -369,10 +369,16 @@ pub(super) fn surface_lateral(
             let b = b_ref?;
             let cn = wing.cn[k]?;
             // Where the page's moment is not applicable (NA) the centre of pressure is left
-            // out: the original's NA is its 2·10⁻³⁰ in the moment's place.
+            // out: the original's NA is its 2·10⁻³⁰ in the moment's place. Where the method
+            // computed no moment at all there is no Cnβ.
             let centre = match cm.get(k).copied().flatten() {
-                Some(cm) if cn != 0.0 => 6.0 * (cm / cn / chord_in_feet) * sin_q.abs() / a,
-                _ => 0.0,
+                _ if cn == 0.0 => 0.0,
+                Some(cm) => 6.0 * (cm / cn / chord_in_feet) * sin_q.abs() / a,
+                None => {
+                    let m = wing.terms.pitching_moment.as_ref()?;
+                    m.cm.get(k).copied().filter(|v| v.is_finite())?;
+                    0.0
+                }
             };
             let bracket = 1.0 / (4.0 * PI * a)
                 - tan_q.abs() / (PI * a * (a + 4.0 * cos_q))

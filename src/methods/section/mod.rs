@@ -48,6 +48,7 @@ pub use max_lift::{
 };
 pub use shape::{
     DesignLift, MaximumReading, SectionShape, ShapeError, StationValues, ThicknessReading,
+    SHORTEST_TRAILING_EDGE,
 };
 pub use surface::{surface_section, SurfaceSection, SurfaceSectionError};
 pub use viscous::MIN_REYNOLDS_NUMBER;

@@ -132,12 +132,18 @@ pub enum ShapeError {
         value: f64,
         previous: f64,
     },
-    #[error("the stations must run along the chord from 0 to 1; they run from {first} to {last}")]
+    #[error("the stations must run along the chord from 0 to 1 (or to at least {SHORTEST_TRAILING_EDGE}); they run from {first} to {last}")]
     NotChord { first: f64, last: f64 },
 }
 
 /// How far the first and last stations may be from 0 and 1.
 const CHORD_END_TOLERANCE: f64 = 1e-6;
+/// The last station of a table that stops short of the trailing edge may lie this far forward
+/// of it and no further: the original computes any such table, closing the section at its last
+/// station, but the thickness method samples the section to 0.99 chord and beyond the last
+/// station extrapolates; over more than 5 % of the chord that gives section slopes of hundreds
+/// per degree (a 10 % section ending at 0.35). Real decks end at 0.979.
+pub const SHORTEST_TRAILING_EDGE: f64 = 0.95;
 
 impl SectionShape {
     /// A section from stations, mean line and half thickness, checked; read smoothly, with no
@@ -206,7 +212,10 @@ impl SectionShape {
         let (first, last) = (self.x[0], self.x[n - 1]);
         // A table may stop short of the trailing edge: its last station is the trailing edge
         // (the original's XYCORD; geometry::section::user_defined warns).
-        if first.abs() > CHORD_END_TOLERANCE || last - 1.0 > CHORD_END_TOLERANCE {
+        if first.abs() > CHORD_END_TOLERANCE
+            || last - 1.0 > CHORD_END_TOLERANCE
+            || last < SHORTEST_TRAILING_EDGE
+        {
             return Err(ShapeError::NotChord { first, last });
         }
         let design = self.design.map_or(vec![], |d| {

@@ -139,9 +139,10 @@ pub struct HorizontalTailAlone {
 /// card), position (XH, ZH after HINAX) and incidence ALIH, on the case's reference area and
 /// length. Then, as the original's M33O41: for a low-aspect-ratio straight tail the first
 /// angle's CLA and CMA are the slopes of the CL and CM curves there (and so is CLα_H with
-/// [`TailSlopeReading::Original`]); otherwise CM and CMA are not applicable from the first angle whose CLA departs from the
-/// first angle's curve slope by more than 7.5 %, and the first angle keeps the analytic
-/// slopes. Validity: that of the wing methods. Original: M16O20, M05O05, M33O41.
+/// [`TailSlopeReading::Original`]); otherwise CM and CMA are not applicable from the first
+/// angle whose CLA departs from the first angle's curve slope by more than 7.5 %, and the first
+/// angle keeps the analytic slopes. Validity: that of the wing methods. Original: M16O20,
+/// M05O05, M33O41.
 pub fn horizontal_tail_alone(
     case: &Case,
     condition_index: usize,
@@ -291,6 +292,7 @@ pub fn fin_zero_lift_drag(
     let max_thickness_x = scalar("XOVC").or(computed.as_ref().map(|c| c.max_thickness_x));
     let outboard = outboard_defaults(
         case.outboard_section,
+        case.section_maximum,
         computed.as_ref(),
         OutboardDefaults {
             thickness_ratio: Some(thickness_ratio),

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::{WingMethodError, WingType, WingWarning};
 use crate::case::{Case, SectionInput};
-use crate::methods::section::{MachCharacteristics, SectionCharacteristics};
+use crate::methods::section::{MachCharacteristics, MaximumReading, SectionCharacteristics};
 
 /// The outboard panel's section values (TOVCO, XOVCO, LERO, CMOT) of a surface that is not
 /// straight tapered, where the deck leaves them unset.
@@ -18,8 +18,9 @@ pub enum OutboardSectionReading {
     /// section method's), and CMO alone for the zero-lift moment.
     #[default]
     Uniform,
-    /// As the original program (SECO): the section method's thickness, its position and
-    /// zero-lift moment (averaged with a given CMO), and LERI, when a section is computed
+    /// As the original program (SECO): the section method's thickness (as the methods take it,
+    /// [`SectionCharacteristics::thickness_ratio`]), its position and zero-lift moment
+    /// (averaged with a given CMO), and LERI (given or computed), when a section is computed
     /// (NACA card or coordinates); otherwise its unset value, about 0, for TOVCO, XOVCO and
     /// LERO. For reproducing old listings (docs/differences.md).
     Original,
@@ -39,6 +40,7 @@ pub struct OutboardDefaults {
 /// [`OutboardSectionReading`]), from the inboard panel's and the section method's.
 pub fn outboard_defaults(
     reading: OutboardSectionReading,
+    maximum: MaximumReading,
     computed: Option<&SectionCharacteristics>,
     inboard: OutboardDefaults,
 ) -> OutboardDefaults {
@@ -48,7 +50,7 @@ pub fn outboard_defaults(
             ..inboard
         },
         (OutboardSectionReading::Original, Some(c)) => OutboardDefaults {
-            thickness_ratio: Some(c.tabulated_max_thickness),
+            thickness_ratio: Some(c.thickness_ratio(maximum)),
             max_thickness_x: Some(c.max_thickness_x),
             leading_edge_radius: inboard.leading_edge_radius,
             cm0: Some(c.cm0),
@@ -189,6 +191,7 @@ pub fn wing_section(
     let outboard = (!straight).then(|| {
         outboard_defaults(
             case.outboard_section,
+            case.section_maximum,
             computed,
             OutboardDefaults {
                 thickness_ratio,
