@@ -10,6 +10,24 @@ fn example() -> String {
     format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"))
 }
 
+/// `run DECK --format json EXTRA…`, which must succeed: its output.
+fn run_json(deck: &std::path::Path, extra: &[&str]) -> Vec<u8> {
+    let out = bin()
+        .arg("run")
+        .arg(deck)
+        .args(["--format", "json"])
+        .args(extra)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{} {extra:?}: {}",
+        deck.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out.stdout
+}
+
 fn temp_dir(name: &str) -> std::path::PathBuf {
     let d = std::env::temp_dir().join(format!("datcom-rs-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
@@ -140,21 +158,7 @@ fn the_readme_main_command_prints_the_aeromech1_results() {
 #[test]
 fn original_is_every_original_rule_at_once() {
     let deck = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
-    let run = |extra: &[&str]| {
-        let out = bin()
-            .arg("run")
-            .arg(&deck)
-            .args(["--format", "json"])
-            .args(extra)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        out.stdout
-    };
+    let run = |extra: &[&str]| run_json(&deck, extra);
     let all = run(&["--original"]);
     let one_by_one = run(&[
         "--reynolds",
@@ -284,21 +288,7 @@ fn each_rule_flag_changes_the_deck_it_is_about() {
     ] {
         let deck = dir.join(format!("{}.dcm", flag.trim_start_matches('-')));
         std::fs::write(&deck, text).unwrap();
-        let run = |extra: &[&str]| {
-            let out = bin()
-                .arg("run")
-                .arg(&deck)
-                .args(["--format", "json"])
-                .args(extra)
-                .output()
-                .unwrap();
-            assert!(
-                out.status.success(),
-                "{flag}: {}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            out.stdout
-        };
+        let run = |extra: &[&str]| run_json(&deck, extra);
         let plain = run(&[]);
         assert_ne!(
             run(&[flag, "original"]),
