@@ -46,20 +46,10 @@ enum SixARule {
     Original,
 }
 
+/// The handbook's method or the original program's reading (the zero-lift, forward-sweep,
+/// tail-slope and Jorgensen-drag rules).
 #[derive(Clone, Copy, ValueEnum)]
-enum ZeroLiftRule {
-    Handbook,
-    Original,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum ForwardSweepRule {
-    Handbook,
-    Original,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum TailSlopeRule {
+enum HandbookRule {
     Handbook,
     Original,
 }
@@ -67,12 +57,6 @@ enum TailSlopeRule {
 #[derive(Clone, Copy, ValueEnum)]
 enum OutboardSectionRule {
     Uniform,
-    Original,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum JorgensenDragRule {
-    Handbook,
     Original,
 }
 
@@ -113,20 +97,20 @@ struct Rules {
     /// it falls through zero beyond the stall; to reproduce its listings; docs/wing.md,
     /// docs/differences.md).
     #[arg(long = "zero-lift", value_enum, default_value = "handbook")]
-    zero_lift: ZeroLiftRule,
+    zero_lift: HandbookRule,
     /// A forward-swept wing: its aerodynamic centre where |tan(leading-edge sweep)|/beta
     /// exceeds 1 by the subsonic chart of figure 4.1.4.2-26 and the vertical panels' roll-rate
     /// terms as for any wing (default), or as the original program has them (its supersonic
     /// chart, the panels' CLP and CLR left out; to reproduce its listings;
     /// docs/differences.md).
     #[arg(long = "forward-sweep", value_enum, default_value = "handbook")]
-    forward_sweep: ForwardSweepRule,
+    forward_sweep: HandbookRule,
     /// The lift-curve slope a low-aspect-ratio straight horizontal tail takes into its
     /// combinations with the body and wing: DATCOM 4.1.3.2's (default), or as the original
     /// program has it (the slope of the tail's lift curve at the schedule's first angle; to
     /// reproduce its listings; docs/differences.md).
     #[arg(long = "tail-slope", value_enum, default_value = "handbook")]
-    tail_slope: TailSlopeRule,
+    tail_slope: HandbookRule,
     /// The outboard panel's section values a deck leaves unset (TOVCO, XOVCO, LERO, CMOT) on a
     /// surface that is not straight tapered: the inboard panel's, a uniform section (default),
     /// or as the original program has them (the computed section's thickness, its position and
@@ -138,7 +122,7 @@ struct Rules {
     /// of the body the deck asks for (default), or as the original program has it (the
     /// axisymmetric method's; to reproduce its listings; docs/differences.md).
     #[arg(long = "jorgensen-drag", value_enum, default_value = "handbook")]
-    jorgensen_drag: JorgensenDragRule,
+    jorgensen_drag: HandbookRule,
     /// Every rule above as the original program has it (its listings' section Reynolds number,
     /// 5-digit and 6A readings, section maximum, zero-lift angle, forward-swept aerodynamic
     /// centre, low-aspect-ratio tail slope, outboard section values, Jorgensen body's drag),
@@ -174,24 +158,24 @@ impl Rules {
             SixARule::Original => SixAReading::Original,
         })
         .with_zero_lift_reading(match self.zero_lift {
-            ZeroLiftRule::Handbook => ZeroLiftReading::Handbook,
-            ZeroLiftRule::Original => ZeroLiftReading::Original,
+            HandbookRule::Handbook => ZeroLiftReading::Handbook,
+            HandbookRule::Original => ZeroLiftReading::Original,
         })
         .with_forward_sweep_reading(match self.forward_sweep {
-            ForwardSweepRule::Handbook => ForwardSweepReading::Handbook,
-            ForwardSweepRule::Original => ForwardSweepReading::Original,
+            HandbookRule::Handbook => ForwardSweepReading::Handbook,
+            HandbookRule::Original => ForwardSweepReading::Original,
         })
         .with_tail_slope_reading(match self.tail_slope {
-            TailSlopeRule::Handbook => TailSlopeReading::Handbook,
-            TailSlopeRule::Original => TailSlopeReading::Original,
+            HandbookRule::Handbook => TailSlopeReading::Handbook,
+            HandbookRule::Original => TailSlopeReading::Original,
         })
         .with_outboard_section_reading(match self.outboard_section {
             OutboardSectionRule::Uniform => OutboardSectionReading::Uniform,
             OutboardSectionRule::Original => OutboardSectionReading::Original,
         })
         .with_jorgensen_drag_reading(match self.jorgensen_drag {
-            JorgensenDragRule::Handbook => JorgensenDragReading::Handbook,
-            JorgensenDragRule::Original => JorgensenDragReading::Original,
+            HandbookRule::Handbook => JorgensenDragReading::Handbook,
+            HandbookRule::Original => JorgensenDragReading::Original,
         })
     }
 }

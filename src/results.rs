@@ -869,18 +869,12 @@ fn body_horizontal_tail_coefficients(
     // low-aspect-ratio straight tail), as in the configuration.
     let tail = crate::methods::tail::horizontal_tail_alone(case, condition_index, alpha_deg)
         .map_err(|e| format!("body-horizontal tail: {e}"))?;
-    let mut surface = tail.surface;
-    surface.cm = tail.cm;
-    let in_place = crate::methods::wing_body::SurfaceInPlace {
-        surface,
-        slope_per_rad: tail.slope_per_rad,
-    };
     let (s, warnings) = wing_body_coefficients(
         &proxy,
         condition_index,
         alpha_deg,
         section.as_ref(),
-        Some(in_place),
+        Some(tail.in_place()),
     )?;
     // The tail is in the wing's place: its page's labels and moment.
     let label = |w: String| {

@@ -23,7 +23,7 @@ use datcom::methods::lateral::{
 };
 use datcom::methods::tail::{horizontal_tail_alone, tail_as_wing};
 use datcom::methods::wing::{computed_wing_section, wing_alone, wing_alone_with_section};
-use datcom::methods::wing_body::{wing_body, wing_body_with_surface, SurfaceInPlace};
+use datcom::methods::wing_body::{wing_body, wing_body_with_surface};
 use datcom::report::compare::agrees;
 use datcom::report::legacy::{self, ListedCondition};
 use datcom::results::{run_case, CaseResults};
@@ -160,14 +160,8 @@ fn ours(
                 wing_alone_with_section(&proxy, k, alpha, section.as_ref()).map_err(|x| e(&x))?;
             // The tail as its own page has it (moment and slope), as on the page.
             let t = horizontal_tail_alone(case, k, alpha).map_err(|x| e(&x))?;
-            let mut surface = t.surface;
-            surface.cm = t.cm;
-            let in_place = SurfaceInPlace {
-                surface,
-                slope_per_rad: t.slope_per_rad,
-            };
             let body_tail =
-                wing_body_with_surface(&proxy, k, alpha, section.as_ref(), Some(in_place))
+                wing_body_with_surface(&proxy, k, alpha, section.as_ref(), Some(t.in_place()))
                     .map_err(|x| e(&x))?;
             // With the tail's own root this is the page of our run: only the root differs.
             let own = wing_body_lateral(&proxy, k, alpha, &tail, &body_tail).map_err(|x| e(&x))?;

@@ -37,6 +37,16 @@ pub struct TwinPanelLateralTerms {
     pub arm_z: f64,
 }
 
+/// True when the case's twin vertical panels count at flight condition `condition_index`: the
+/// original adds their terms up to STMACH and leaves them out above it.
+pub fn twin_panels_counted(case: &Case, condition_index: usize) -> bool {
+    case.twin_panels.is_some()
+        && case
+            .conditions
+            .get(condition_index)
+            .is_some_and(|c| c.mach <= crate::methods::body::subsonic_limit(case))
+}
+
 /// CYβ, Cnβ (first row) and Clβ (every row) of the twin vertical panels for flight condition
 /// `condition_index` of `case`, per radian:
 ///
@@ -49,16 +59,6 @@ pub struct TwinPanelLateralTerms {
 /// [`twin_panels_counted`]). VPHITE not given is 0°, with a warning. Errors: no $TVTPAN,
 /// another variable of it missing, no body (its length), no reference area or lateral
 /// reference length, charts.
-/// True when the case's twin vertical panels count at flight condition `condition_index`: the
-/// original adds their terms up to STMACH and leaves them out above it.
-pub fn twin_panels_counted(case: &Case, condition_index: usize) -> bool {
-    case.twin_panels.is_some()
-        && case
-            .conditions
-            .get(condition_index)
-            .is_some_and(|c| c.mach <= crate::methods::body::subsonic_limit(case))
-}
-
 pub fn twin_panel_lateral(case: &Case, alpha_deg: &[f64]) -> Result<Lateral, LateralError> {
     let missing = |what: &str| LateralError::Geometry {
         reason: format!("the twin vertical panels' sideslip terms need {what}"),

@@ -134,6 +134,20 @@ pub struct HorizontalTailAlone {
     pub low_aspect_ratio_straight: bool,
 }
 
+impl HorizontalTailAlone {
+    /// The tail in the wing's place of the wing-body methods (the BODY-HORIZONTAL TAIL page):
+    /// the surface with the page's moment (the tail's "not applicable" rule) and the slope its
+    /// combinations take.
+    pub fn in_place(self) -> crate::methods::wing_body::SurfaceInPlace {
+        let mut surface = self.surface;
+        surface.cm = self.cm;
+        crate::methods::wing_body::SurfaceInPlace {
+            surface,
+            slope_per_rad: self.slope_per_rad,
+        }
+    }
+}
+
 /// DATCOM 4.1.3 to 4.1.5 applied to the horizontal tail at subsonic speeds: the wing-alone
 /// methods of `methods::wing` on the tail's planform ($HTPLNF), section ($HTSCHR or a NACA-H
 /// card), position (XH, ZH after HINAX) and incidence ALIH, on the case's reference area and
