@@ -32,10 +32,12 @@ pub mod methods;
 pub mod numeric;
 pub mod report;
 pub mod results;
+pub mod warning;
 
 pub use case::{Case, Deck};
 pub use error::{DeckProblem, Diagnosed, Diagnostic, Error, Severity};
 pub use results::{CaseResults, ConditionResults, Results};
+pub use warning::Warning;
 
 /// Reads a deck from text; `file` names it in diagnostics. Never fails: every problem is a
 /// diagnostic in the returned deck.

@@ -9,7 +9,7 @@ use crate::deck::cards::{DerivUnit, Dim};
 use crate::geometry::section::{section_for, SectionCoordinates};
 use crate::methods::section::surface_section;
 use crate::methods::section::{section_characteristics, SectionCharacteristics};
-use std::fmt;
+use crate::warning::{Context, Warning};
 
 /// Static coefficients against angle of attack (columns of the original's static page).
 /// Derivatives are per radian. `None` where there is no value.
@@ -53,18 +53,6 @@ pub struct DynamicDerivatives {
 pub const DYNAMIC_NAMES: [&str; 9] = [
     "CLQ", "CMQ", "CLAD", "CMAD", "CLP", "CYP", "CNP", "CNR", "CLR",
 ];
-
-/// Room for a labelled warning: most are shorter, so the text is written without regrowing.
-const WARNING_CAPACITY: usize = 192;
-
-/// `label: warning`, the text a result's warning list holds.
-fn labelled(label: impl fmt::Display, warning: impl fmt::Display) -> String {
-    use fmt::Write;
-    let mut text = String::with_capacity(WARNING_CAPACITY);
-    // Writing to a String does not fail.
-    let _ = write!(text, "{label}: {warning}");
-    text
-}
 
 fn nones(n: usize) -> Vec<Option<f64>> {
     vec![None; n]
@@ -242,7 +230,7 @@ pub struct SectionResult {
     pub surface: Surface,
     pub coordinates: Option<SectionCoordinates>,
     pub characteristics: Option<SectionCharacteristics>,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
 }
 
 /// One case's results.
@@ -258,7 +246,7 @@ pub struct CaseResults {
     /// Sections of the wing, horizontal tail, vertical tail and ventral fin that have one.
     pub sections: Vec<SectionResult>,
     pub conditions: Vec<ConditionResults>,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     /// The case's whole configuration as the original names it. No page has this name when
     /// the build-up has no page for the combination (a wing and tails without a body, ...):
     /// the pages of its largest parts are given instead, none of them the whole aircraft.
@@ -375,8 +363,8 @@ macro_rules! longitudinal {
 /// none into its warnings, labelled with the configuration (`wing-body, sideslip: ...`).
 fn add_sideslip(
     s: &mut StaticCoefficients,
-    warnings: &mut Vec<String>,
-    label: &str,
+    warnings: &mut Vec<Warning>,
+    label: &'static str,
     lateral: Result<crate::methods::lateral::Lateral, String>,
 ) {
     match lateral {
@@ -384,13 +372,13 @@ fn add_sideslip(
             warnings.extend(
                 lat.warnings
                     .iter()
-                    .map(|x| labelled(format_args!("{label}, sideslip"), x)),
+                    .map(|x| Warning::new(Context::Sideslip(label), x.clone())),
             );
             s.cyb = lat.cyb;
             s.cnb = lat.cnb;
             s.clb = lat.clb;
         }
-        Err(e) => warnings.push(format!("{label}, sideslip: {e}")),
+        Err(e) => warnings.push(format!("{label}, sideslip: {e}").into()),
     }
 }
 
@@ -403,7 +391,7 @@ fn low_aspect_ratio_coefficients(
     case: &Case,
     condition: &FlightCondition,
     alpha_deg: &[f64],
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     use crate::methods::low_aspect_ratio as lar;
     let lb = case.larwb.as_ref().ok_or("the case has no $LARWB")?;
     let flight = lar::LowAspectRatioFlight {
@@ -413,10 +401,10 @@ fn low_aspect_ratio_coefficients(
     };
     let page = lar::low_aspect_ratio_wing_body(lb, flight, alpha_deg)
         .map_err(|e| format!("low-aspect-ratio wing-body: {e}"))?;
-    let mut warnings: Vec<String> = page
+    let mut warnings: Vec<Warning> = page
         .warnings
         .iter()
-        .map(|w| labelled("low-aspect-ratio wing-body", w))
+        .map(|w| Warning::new(Context::Part("low-aspect-ratio wing-body"), w.clone()))
         .collect();
     let some = |v: &[f64]| {
         v.iter()
@@ -438,7 +426,7 @@ fn low_aspect_ratio_coefficients(
             s.cnb = some(&d.cnb);
             s.clb = some(&d.clb);
         }
-        Err(e) => warnings.push(format!("low-aspect-ratio wing-body sideslip: {e}")),
+        Err(e) => warnings.push(format!("low-aspect-ratio wing-body sideslip: {e}").into()),
     }
     Ok((s, warnings))
 }
@@ -448,15 +436,15 @@ fn body_alone_coefficients(
     case: &Case,
     condition: &FlightCondition,
     alpha_deg: &[f64],
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     let body = case.body.as_ref().ok_or("the case has no body")?;
     let geometry = crate::geometry::body(body).map_err(|e| format!("body geometry: {e}"))?;
     let b = crate::methods::body::body_alone(case, &geometry, condition, alpha_deg)
         .map_err(|e| format!("body alone: {e}"))?;
-    let mut warnings: Vec<String> = b
+    let mut warnings: Vec<Warning> = b
         .warnings
         .iter()
-        .map(|w| labelled("body alone", w))
+        .map(|w| Warning::new(Context::Part("body alone"), w.clone()))
         .collect();
     // Sideslip derivatives of the body alone (DATCOM 5.2.1.1 as the original forms them).
     let lateral = crate::methods::lateral::body_lateral(&b, case);
@@ -472,14 +460,14 @@ fn wing_alone_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
     section: Option<&SectionCharacteristics>,
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     let w =
         crate::methods::wing::wing_alone_with_section(case, condition_index, alpha_deg, section)
             .map_err(|e| format!("wing alone: {e}"))?;
-    let mut warnings: Vec<String> = w
+    let mut warnings: Vec<Warning> = w
         .warnings
         .iter()
-        .map(|x| labelled("wing alone", x))
+        .map(|x| Warning::new(Context::Part("wing alone"), x.clone()))
         .collect();
     // Sideslip derivatives of the wing alone (DATCOM 5.1.2.1).
     let lateral = crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w)
@@ -508,7 +496,7 @@ fn vertical_tail_sideslip(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<Warning>,
 ) -> Result<crate::methods::lateral::Lateral, crate::methods::lateral::LateralError> {
     use crate::methods::lateral::{self, fin_lateral, Fin};
     let with_fin = case.vertical_tail.is_some() || case.twin_panels.is_none();
@@ -522,10 +510,13 @@ fn vertical_tail_sideslip(
     }
     if !lateral::twin_panels_counted(case, condition_index) {
         let mach = case.conditions.get(condition_index).map_or(0.0, |c| c.mach);
-        warnings.push(format!(
+        warnings.push(
+            format!(
             "Mach {mach:.3}: the lateral stability derivatives do not include the effects of the \
              twin vertical panels (no DATCOM method above STMACH)"
-        ));
+        )
+            .into(),
+        );
         return Ok(fin);
     }
     let twin = lateral::twin_panel_lateral(case, alpha_deg)?;
@@ -552,7 +543,7 @@ fn tail_configuration_coefficients(
     condition_index: usize,
     totals: &Result<crate::methods::tail::ConfigurationTotals, String>,
     part: &str,
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     use crate::methods::lateral;
     let t = totals.as_ref().map_err(Clone::clone)?;
     let c = match part {
@@ -561,7 +552,11 @@ fn tail_configuration_coefficients(
         _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
     }
     .ok_or_else(|| format!("{part}: not computed"))?;
-    let mut warnings: Vec<String> = t.warnings.iter().map(|w| labelled("tails", w)).collect();
+    let mut warnings: Vec<Warning> = t
+        .warnings
+        .iter()
+        .map(|w| Warning::new(Context::Part("tails"), w.clone()))
+        .collect();
     let mut s = coefficients(c);
     let alpha = &t.alpha_deg;
     let wb = &t.terms.wing_body;
@@ -612,7 +607,7 @@ fn wing_body_coefficients(
     alpha_deg: &[f64],
     section: Option<&SectionCharacteristics>,
     in_place: Option<crate::methods::wing_body::SurfaceInPlace>,
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     let w = crate::methods::wing_body::wing_body_with_surface(
         case,
         condition_index,
@@ -621,10 +616,10 @@ fn wing_body_coefficients(
         in_place,
     )
     .map_err(|e| format!("wing-body: {e}"))?;
-    let mut warnings: Vec<String> = w
+    let mut warnings: Vec<Warning> = w
         .warnings
         .iter()
-        .map(|x| labelled("wing-body", x))
+        .map(|x| Warning::new(Context::Part("wing-body"), x.clone()))
         .collect();
     // Sideslip derivatives of the wing-body (DATCOM 5.2.2.1, 5.2.3.1), which need the wing
     // alone as well.
@@ -660,14 +655,14 @@ fn horizontal_tail_coefficients(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     let t = crate::methods::tail::horizontal_tail_alone(case, condition_index, alpha_deg)
         .map_err(|e| format!("horizontal tail alone: {e}"))?;
-    let mut warnings: Vec<String> = t
+    let mut warnings: Vec<Warning> = t
         .surface
         .warnings
         .iter()
-        .map(|x| labelled("horizontal tail alone", x))
+        .map(|x| Warning::new(Context::Part("horizontal tail alone"), x.clone()))
         .collect();
     let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
         alpha_deg,
@@ -690,8 +685,8 @@ fn fin_drag(
     case: &Case,
     condition_index: usize,
     surface: Surface,
-    label: &str,
-    warnings: &mut Vec<String>,
+    label: &'static str,
+    warnings: &mut Vec<Warning>,
 ) -> Result<f64, String> {
     let present = match surface {
         Surface::VerticalTail => case.vertical_tail.is_some(),
@@ -709,7 +704,11 @@ fn fin_drag(
         &mut tail_warnings,
     )
     .map_err(|e| format!("{label}: {e}"))?;
-    warnings.extend(tail_warnings.iter().map(|w| labelled(label, w)));
+    warnings.extend(
+        tail_warnings
+            .into_iter()
+            .map(|w| Warning::new(Context::Part(label), w)),
+    );
     Ok(drag.drag.total)
 }
 
@@ -717,8 +716,8 @@ fn fin_drag(
 fn fins_drag(
     case: &Case,
     condition_index: usize,
-    label: &str,
-    warnings: &mut Vec<String>,
+    label: &'static str,
+    warnings: &mut Vec<Warning>,
 ) -> Result<f64, String> {
     Ok(fin_drag(
         case,
@@ -736,8 +735,8 @@ fn fins_sideslip(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
-    label: &str,
-    warnings: &mut Vec<String>,
+    label: &'static str,
+    warnings: &mut Vec<Warning>,
 ) -> Result<Vec<crate::methods::lateral::Lateral>, crate::methods::lateral::LateralError> {
     use crate::methods::lateral::{self, Fin, LateralWarning};
     let mut parts = Vec::new();
@@ -750,7 +749,10 @@ fn fins_sideslip(
         )?);
     }
     if lateral::ventral_fin_left_out(case) {
-        warnings.push(labelled(label, &LateralWarning::VentralFinLeftOut));
+        warnings.push(Warning::new(
+            Context::Part(label),
+            LateralWarning::VentralFinLeftOut,
+        ));
     } else if case.ventral_fin.is_some() {
         parts.push(lateral::fin_lateral(
             case,
@@ -771,7 +773,7 @@ fn fin_alone_coefficients(
     condition_index: usize,
     alpha_deg: &[f64],
     fin: crate::methods::lateral::Fin,
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     use crate::methods::lateral::{self, Fin, Lateral, LateralWarning};
     let mut warnings = Vec::new();
     let (surface, label) = match fin {
@@ -794,7 +796,10 @@ fn fin_alone_coefficients(
             vertical_tail_sideslip(case, condition_index, alpha_deg, &mut warnings)
         }
         Fin::VentralFin if lateral::ventral_fin_left_out(case) => {
-            warnings.push(labelled(label, &LateralWarning::VentralFinLeftOut));
+            warnings.push(Warning::new(
+                Context::Part(label),
+                LateralWarning::VentralFinLeftOut,
+            ));
             Ok(Lateral::zero(alpha_deg))
         }
         Fin::VentralFin => lateral::fin_lateral(case, condition_index, alpha_deg, fin),
@@ -812,7 +817,7 @@ fn body_vertical_tail_coefficients(
     condition: &FlightCondition,
     condition_index: usize,
     alpha_deg: &[f64],
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     use crate::methods::lateral;
     let label = "body-vertical tail";
     let (body, mut warnings) = body_alone_coefficients(case, condition, alpha_deg)?;
@@ -857,7 +862,7 @@ fn body_horizontal_tail_coefficients(
     case: &Case,
     condition_index: usize,
     alpha_deg: &[f64],
-) -> Result<(StaticCoefficients, Vec<String>), String> {
+) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     let mut proxy = crate::methods::tail::tail_as_wing(case)
         .map_err(|e| format!("body-horizontal tail: {e}"))?;
     proxy.reference.span = crate::methods::lateral::lateral_reference_length(case);
@@ -877,9 +882,12 @@ fn body_horizontal_tail_coefficients(
         Some(tail.in_place()),
     )?;
     // The tail is in the wing's place: its page's labels and moment.
-    let label = |w: String| {
-        w.replacen("wing-body", "body-horizontal tail", 1)
-            .replace("(the wing's moment is not)", "(the tail's moment is not)")
+    let label = |w: Warning| {
+        Warning::text(
+            w.to_string()
+                .replacen("wing-body", "body-horizontal tail", 1)
+                .replace("(the wing's moment is not)", "(the tail's moment is not)"),
+        )
     };
     Ok((s, warnings.into_iter().map(label).collect()))
 }
@@ -893,13 +901,10 @@ fn dynamic_derivatives(
     part: &str,
     section: Option<&SectionCharacteristics>,
     totals: Option<&Result<crate::methods::tail::ConfigurationTotals, String>>,
-) -> (DynamicDerivatives, Vec<String>) {
+) -> (DynamicDerivatives, Vec<Warning>) {
     use crate::methods::dynamic::{self as dy, Dynamic, TailConfiguration};
     let n = alpha_deg.len();
-    let label = format!(
-        "Mach {}: dynamic derivatives",
-        case.conditions.get(index).map_or(0.0, |c| c.mach)
-    );
+    let mach = case.conditions.get(index).map_or(0.0, |c| c.mach);
     // With a double-delta or cranked wing the original computes none of the tails' pitch-rate
     // and α̇ terms: the fins' and body-tail pages print NDM there (docs/tail.md).
     let wing_not_straight = double_delta_or_cranked_wing(case);
@@ -1044,10 +1049,17 @@ fn dynamic_derivatives(
     })();
     match computed {
         Ok(d) => {
-            let warnings = d.warnings.iter().map(|w| labelled(&label, w)).collect();
+            let warnings = d
+                .warnings
+                .iter()
+                .map(|w| Warning::new(Context::Dynamic { mach }, w.clone()))
+                .collect();
             (DynamicDerivatives::from_columns(&d), warnings)
         }
-        Err(e) => (DynamicDerivatives::empty(n), vec![format!("{label}: {e}")]),
+        Err(e) => (
+            DynamicDerivatives::empty(n),
+            vec![format!("Mach {mach}: dynamic derivatives: {e}").into()],
+        ),
     }
 }
 
@@ -1210,7 +1222,7 @@ pub fn run_case(case: &Case) -> CaseResults {
         built.cards.build = true;
         built.cards.part = true;
         let mut results = run_case(&built);
-        results.warnings.insert(0, BUILD_UP_IMPLIED.to_string());
+        results.warnings.insert(0, Warning::text(BUILD_UP_IMPLIED));
         return results;
     }
     let ordered = case
@@ -1238,7 +1250,9 @@ pub fn run_case(case: &Case) -> CaseResults {
         notes.push(ordered.reason);
     }
     let mut results = compute_case(&fixed);
-    results.warnings.splice(0..0, notes);
+    results
+        .warnings
+        .splice(0..0, notes.into_iter().map(Warning::from));
     results
 }
 
@@ -1325,8 +1339,16 @@ fn compute_case(case: &Case) -> CaseResults {
     let configuration = configuration_name(case);
     if let Some(f) = &case.flight {
         let conds = case.conditions.clone();
-        warnings.extend(case.condition_warnings.iter().cloned());
-        warnings.extend(crate::methods::experimental::unused_variables(case));
+        warnings.extend(
+            case.condition_warnings
+                .iter()
+                .map(|w| Warning::text(w.as_str())),
+        );
+        warnings.extend(
+            crate::methods::experimental::unused_variables(case)
+                .into_iter()
+                .map(Warning::from),
+        );
         let n = f.alpha_deg.len();
         // Component configurations: the configuration itself when it is one component, and
         // with BUILD the parts of the build-up the methods so far compute.
@@ -1403,7 +1425,7 @@ fn compute_case(case: &Case) -> CaseResults {
             warnings.push(format!(
                 "{configuration}: the build-up has no page of its own for this combination of components: the pages of its largest parts are given ({}), as the original prints them",
                 own_pages.join(", ")
-            ));
+            ).into());
         }
         for (index, c) in conds.into_iter().enumerate() {
             let mut own_computed = false;
@@ -1490,7 +1512,7 @@ fn compute_case(case: &Case) -> CaseResults {
                 // The page's own warnings after its dynamic derivatives'.
                 match static_warnings {
                     Ok(mut w) => warnings.append(&mut w),
-                    Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach)),
+                    Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach).into()),
                 }
                 if own {
                     own_computed = true;
@@ -1504,7 +1526,7 @@ fn compute_case(case: &Case) -> CaseResults {
                     }
                 }
                 if let Some(w) = without_non_finite(&mut entry) {
-                    warnings.push(w);
+                    warnings.push(w.into());
                 }
                 conditions.push(entry);
             }
@@ -1523,13 +1545,9 @@ fn compute_case(case: &Case) -> CaseResults {
             }
         }
     }
-    // The same warning from several configurations of a condition is said once.
-    let first: Vec<bool> = {
-        let mut seen = std::collections::BTreeSet::new();
-        warnings.iter().map(|w| seen.insert(w.as_str())).collect()
-    };
-    let mut first = first.into_iter();
-    warnings.retain(|_| first.next().unwrap_or(true));
+    // The same warning from several configurations of a condition is said once (the
+    // writers also say a text once: `warning::texts`).
+    crate::warning::dedup(&mut warnings);
     let wing_reference = case.wing.as_ref().and_then(planform_area_and_mac);
     if wing_reference.is_some_and(|(area, chord)| !(area.is_finite() && chord.is_finite())) {
         warnings.push(
@@ -1566,34 +1584,35 @@ fn sections(case: &Case) -> Vec<SectionResult> {
             let coordinates = match section_for(case, surface)? {
                 Ok(c) => Some(c),
                 Err(e) => {
-                    warnings.push(format!("{} section: {e}", surface.name()));
+                    warnings.push(format!("{} section: {e}", surface.name()).into());
                     None
                 }
             };
             let characteristics = match surface_section(case, surface) {
                 None => None,
                 Some(Err(e)) => {
-                    warnings.push(format!("{} section: {e}", surface.name()));
+                    warnings.push(format!("{} section: {e}", surface.name()).into());
                     None
                 }
                 Some(Ok(s)) => {
                     warnings.extend(
                         s.warnings
                             .iter()
-                            .map(|w| labelled(format_args!("{} section", surface.name()), w)),
+                            .map(|w| Warning::new(Context::Section(surface), w.clone())),
                     );
                     match section_characteristics(&s.shape, &s.conditions, &s.overrides) {
                         Ok(c) => {
                             warnings.extend(
-                                c.warnings.iter().map(|w| {
-                                    labelled(format_args!("{} section", surface.name()), w)
-                                }),
+                                c.warnings
+                                    .iter()
+                                    .map(|w| Warning::new(Context::Section(surface), w.clone())),
                             );
                             Some(c)
                         }
                         Err(e) => {
-                            warnings
-                                .push(format!("{} section characteristics: {e}", surface.name()));
+                            warnings.push(
+                                format!("{} section characteristics: {e}", surface.name()).into(),
+                            );
                             None
                         }
                     }

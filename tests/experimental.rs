@@ -77,7 +77,7 @@ fn cases_with_experimental_data_against_the_original() {
             assert!(
                 warnings
                     .iter()
-                    .any(|w| w.contains("experimental data from $EXPR01")),
+                    .any(|w| w.to_string().contains("experimental data from $EXPR01")),
                 "{name} case {k}: no warning naming the substituted data: {warnings:?}"
             );
         }
@@ -125,15 +125,15 @@ fn unused_experimental_variables_are_named() {
     );
     let warnings = &datcom::run(&deck).cases[0].warnings;
     assert!(
-        warnings
-            .iter()
-            .any(|w| w.starts_with("$EXPR01: experimental data CLW not used")),
+        warnings.iter().any(|w| w
+            .to_string()
+            .starts_with("$EXPR01: experimental data CLW not used")),
         "{warnings:?}"
     );
     assert!(
-        warnings
-            .iter()
-            .any(|w| w.starts_with("$EXPR02: experimental data ALPLW, ALPOW not used")),
+        warnings.iter().any(|w| w
+            .to_string()
+            .starts_with("$EXPR02: experimental data ALPLW, ALPOW not used")),
         "{warnings:?}"
     );
 }

@@ -479,8 +479,8 @@ fn a_wing_height_beyond_the_body_is_a_warning() {
         results
             .warnings
             .iter()
+            .map(ToString::to_string)
             .filter(|w| w.starts_with("wing-body, sideslip: figure 5.2.1.1-7"))
-            .cloned()
             .collect::<Vec<_>>()
     };
     assert_eq!(warned(&text), Vec::<String>::new());

@@ -74,14 +74,16 @@ fn what_a_case_built_in_code_does_not_need() {
     let unprepared = datcom::results::run_case(&case);
     assert_eq!(unprepared.conditions, prepared.conditions);
     assert!(
-        unprepared.warnings[0].contains("Case::prepare was not called"),
+        unprepared.warnings[0]
+            .to_string()
+            .contains("Case::prepare was not called"),
         "{:?}",
         unprepared.warnings.first()
     );
     assert!(!prepared
         .warnings
         .iter()
-        .any(|w| w.contains("Case::prepare")));
+        .any(|w| w.to_string().contains("Case::prepare")));
 
     // Stale: prepared, then the Mach numbers changed.
     case.prepare();
@@ -131,7 +133,9 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
             page.static_coefficients.cl
         );
         assert!(
-            r.warnings.iter().any(|w| w.contains(&format!("{what} = "))),
+            r.warnings
+                .iter()
+                .any(|w| w.to_string().contains(&format!("{what} = "))),
             "{what}: {:?}",
             r.warnings
         );

@@ -163,7 +163,7 @@ fn section_json(s: &crate::results::SectionResult) -> SectionJson {
         max_thickness: k.map(|k| k.max_thickness),
         delta_y: k.map(|k| k.delta_y_percent),
         per_mach,
-        warnings: s.warnings.clone(),
+        warnings: crate::warning::texts(&s.warnings),
     }
 }
 
@@ -272,7 +272,7 @@ pub fn view(results: &Results) -> ResultsJson {
                         .map(|s| (s.surface.name().to_string(), section_json(s)))
                         .collect(),
                     conditions: c.conditions.iter().map(|k| condition(k, c)).collect(),
-                    warnings: c.warnings.clone(),
+                    warnings: crate::warning::texts(&c.warnings),
                 }
             })
             .collect(),

@@ -195,7 +195,7 @@ pub fn to_string(results: &Results) -> String {
                 super::auxiliary::interference(&mut s, &view);
             }
         }
-        for w in &case.warnings {
+        for w in crate::warning::texts(&case.warnings) {
             let _ = writeln!(s, " warning (case {}): {w}", case.number);
         }
     }
@@ -290,7 +290,7 @@ pub fn section_pages(case: &CaseResults) -> String {
                 let _ = writeln!(s, "{m}");
             }
         }
-        for w in &section.warnings {
+        for w in crate::warning::texts(&section.warnings) {
             let _ = writeln!(s, " warning: {w}");
         }
     }
