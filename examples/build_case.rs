@@ -150,6 +150,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for w in &results.warnings {
         eprintln!("warning: {w}");
     }
+    // The warnings are typed: what a method found, matched on without reading text.
+    let charts_left = results
+        .warnings
+        .iter()
+        .filter(|w| w.chart().is_some())
+        .count();
+    println!("{charts_left} chart readings outside the charts' data");
 
     // The terms: any method runs on the case directly and returns its named terms.
     let alpha = &case

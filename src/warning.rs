@@ -76,6 +76,54 @@ impl Warning {
     pub fn detail(&self) -> &Detail {
         &self.detail
     }
+
+    /// The chart reading that left the chart's data, when this warning is one (see
+    /// [`Detail::chart`]).
+    pub fn chart(&self) -> Option<&ChartWarning> {
+        self.detail.chart()
+    }
+}
+
+impl Detail {
+    /// The chart reading that left the chart's data, when this warning is one, also inside a
+    /// component's warning (the horizontal tail's as a wing, the wing-body's body, ...).
+    pub fn chart(&self) -> Option<&ChartWarning> {
+        fn body(w: &BodyWarning) -> Option<&ChartWarning> {
+            match w {
+                BodyWarning::Chart(c) => Some(c),
+                _ => None,
+            }
+        }
+        fn wing(w: &WingWarning) -> Option<&ChartWarning> {
+            match w {
+                WingWarning::Chart(c) => Some(c),
+                _ => None,
+            }
+        }
+        fn wing_body(w: &WingBodyWarning) -> Option<&ChartWarning> {
+            match w {
+                WingBodyWarning::Chart(c) => Some(c),
+                WingBodyWarning::Wing(w) => wing(w),
+                WingBodyWarning::Body(w) => body(w),
+                _ => None,
+            }
+        }
+        match self {
+            Detail::Chart(c)
+            | Detail::Lateral(LateralWarning::Chart(c))
+            | Detail::Dynamic(DynamicWarning::Chart(c)) => Some(c),
+            Detail::Body(w) => body(w),
+            Detail::Wing(w) => wing(w),
+            Detail::WingBody(w) => wing_body(w),
+            Detail::Tail(w) => match w {
+                TailWarning::Chart(c) => Some(c),
+                TailWarning::Wing(w) | TailWarning::HorizontalTail(w) => wing(w),
+                TailWarning::WingBody(w) => wing_body(w),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
 }
 
 impl From<String> for Warning {
@@ -185,6 +233,26 @@ mod tests {
         let s = Warning::new(Context::Section(Surface::Wing), Detail::Text("y".into()));
         assert_eq!(s.to_string(), "WING section: y");
         assert_eq!(Warning::text("z").to_string(), "z");
+    }
+
+    #[test]
+    fn a_chart_reading_is_found_inside_a_components_warning() {
+        let reading = ChartWarning {
+            chart: "4.1.3.3-55a".into(),
+            variable: "tan_ratio".into(),
+            value: 0.1053,
+            min: 0.2,
+            max: 1.0,
+            action: crate::charts::Outside::Linear,
+        };
+        let nested = Warning::new(
+            Context::Part("tails"),
+            TailWarning::HorizontalTail(WingWarning::Chart(reading.clone())),
+        );
+        assert_eq!(nested.chart(), Some(&reading));
+        let other = Warning::new(Context::Part("tails"), TailWarning::NoTailMoment);
+        assert_eq!(other.chart(), None);
+        assert_eq!(Warning::text("x").chart(), None);
     }
 
     #[test]
