@@ -68,3 +68,72 @@ fn navion_listing_values() {
     assert_eq!(c["dynamic"]["CLAD"][0], 3.603);
     assert_eq!(c["mach"], 0.158);
 }
+
+/// A page the original prints with power (or ground) effects included carries the note under
+/// its configuration line. The importer keeps the note (`included`), reads the CASEID from the
+/// line after it, and puts the configuration's dynamic page with it; `compare` counts such a
+/// page's static and downwash numbers as having no counterpart in a page without the effects
+/// (ours computes neither), and compares its dynamic derivatives.
+#[test]
+fn a_page_with_power_effects_is_marked_and_not_compared_with_a_power_off_one() {
+    const NOTE: &str = "PROPELLER POWER EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS";
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let deck = datcom::read_deck_file(&path).expect("the bundled deck");
+    let results = datcom::run(&deck);
+    let listing = datcom::report::for006::to_string(&results);
+    let configuration = results.cases[0].conditions[0].configuration.clone();
+    // The note under the configuration line of the static page, as the original prints it.
+    let mut lines: Vec<String> = listing.lines().map(str::to_string).collect();
+    let at = lines
+        .iter()
+        .position(|l| l.contains("CHARACTERISTICS AT ANGLE OF ATTACK"))
+        .expect("a static page");
+    assert_eq!(
+        lines[at + 1].trim(),
+        configuration,
+        "the configuration line"
+    );
+    lines.insert(at + 2, format!("{:>31}{NOTE}", ""));
+    let powered = lines.join("\n");
+
+    let plain = legacy::read_listing(&listing);
+    let read = legacy::read_listing(&powered);
+    let page = &read[0].conditions[0];
+    assert_eq!(page.included, vec![NOTE.to_string()]);
+    assert!(plain[0].conditions[0].included.is_empty());
+    assert_eq!(
+        read[0].caseid, plain[0].caseid,
+        "the CASEID is not the note"
+    );
+    assert!(page.statics.is_some() && page.dynamics.is_some());
+
+    let ours: serde_json::Value =
+        serde_json::from_str(&json::to_string(&results)).expect("our JSON");
+    let reference: serde_json::Value =
+        serde_json::from_str(&json::listing_to_string(&powered, "powered")).expect("imported");
+    assert_eq!(reference["cases"][0]["conditions"][0]["included"][0], NOTE);
+    let rows = compare::compare(&ours, &reference);
+    let row = |name: &str| {
+        rows.iter()
+            .find(|r| r.coefficient == name)
+            .unwrap_or_else(|| panic!("{name} compared"))
+    };
+    // Without the note, every number is compared.
+    let unpowered: serde_json::Value =
+        serde_json::from_str(&json::listing_to_string(&listing, "plain")).expect("imported");
+    let plain_rows = compare::compare(&ours, &unpowered);
+    let plain_row = |name: &str| plain_rows.iter().find(|r| r.coefficient == name).unwrap();
+    assert_eq!(plain_row("CL").missing, 0);
+    let n = results.cases[0].conditions[0].alpha_deg.len();
+    assert_eq!(
+        row("CL").missing,
+        n,
+        "the powered page's CL has no counterpart"
+    );
+    assert_eq!(row("CL").compared, plain_row("CL").compared - n);
+    assert_eq!(
+        (row("CLQ").compared, row("CLQ").missing),
+        (plain_row("CLQ").compared, 0),
+        "the dynamic derivatives are compared"
+    );
+}

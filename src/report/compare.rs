@@ -236,11 +236,22 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
             }
         }
         for (ki, (x, y)) in pairs.into_iter().enumerate() {
+            // A reference page with power or ground effects included (`included`, from a
+            // listing) paired with a page without them (ours computes neither): its static and
+            // downwash numbers have no counterpart; its dynamic derivatives include neither
+            // effect and are compared.
+            let included = |v: &Value| v["included"].as_array().cloned().unwrap_or_default();
+            let with_effects = included(y) != included(x);
             for (block, names) in [
                 ("static", &STATIC[..]),
                 ("dynamic", &DYNAMIC[..]),
                 ("downwash", &DOWNWASH[..]),
             ] {
+                let x = if with_effects && block != "dynamic" {
+                    &Value::Null
+                } else {
+                    x
+                };
                 let alpha = numbers(&y[block]["alpha"]);
                 for name in names {
                     let col = out

@@ -68,6 +68,11 @@ pub struct ConditionJson {
     #[serde(flatten)]
     pub condition: ConditionView,
     pub configuration: String,
+    /// On a page imported from the original's listing: what its static page includes, as the
+    /// original prints it under the configuration (power or ground effects). Absent on ours
+    /// (no power or ground effects are computed) and on the original's ordinary pages.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub included: Vec<String>,
     pub deriv_unit: DerivUnit,
     #[serde(rename = "static")]
     pub static_coefficients: StaticJson,
@@ -195,6 +200,7 @@ fn condition(c: &ConditionResults, case: &CaseResults) -> ConditionJson {
     ConditionJson {
         condition: condition_view(c, case.dim),
         configuration: c.configuration.clone(),
+        included: Vec::new(),
         deriv_unit: u,
         static_coefficients: StaticJson {
             alpha: c.alpha_deg.clone(),
@@ -346,6 +352,7 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                                     reynolds_per_length: f("reynolds_per_length").unwrap_or(0.0),
                                 },
                                 configuration: k.configuration.clone(),
+                                included: k.included.clone(),
                                 deriv_unit: if k.deriv_per_radian {
                                     DerivUnit::Rad
                                 } else {

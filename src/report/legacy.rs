@@ -254,6 +254,11 @@ fn read_table(lines: &[&str], start: usize, columns: &[(&str, usize)]) -> Table 
 pub struct ListedCondition {
     pub row: ConditionRow,
     pub configuration: String,
+    /// What the original says its static page includes, printed under the configuration:
+    /// `PROPELLER POWER EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS`, the jet's, or
+    /// ground effects; empty for the ordinary page. (With BUILD the original prints the
+    /// configuration's page without them first, then the page with them.)
+    pub included: Vec<String>,
     pub deriv_per_radian: bool,
     pub statics: Option<Table>,
     pub dynamics: Option<Table>,
@@ -304,13 +309,20 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             continue;
         }
         let configuration = lines.get(i + 2).map_or("", |s| s.trim()).to_string();
+        // Power or ground effects included in the page, each on a line of its own.
+        let included: Vec<String> = lines[(i + 3).min(lines.len())..]
+            .iter()
+            .map(|s| s.trim())
+            .take_while(|s| s.contains(" INCLUDED IN "))
+            .map(str::to_string)
+            .collect();
         let caseid = lines
-            .get(i + 3)
+            .get(i + 3 + included.len())
             .map(|s| s.trim())
             .filter(|s| !s.is_empty())
             .map(str::to_string);
         // The FLIGHT CONDITIONS block follows within a few lines.
-        let Some(fc) = (i + 3..(i + 8).min(lines.len()))
+        let Some(fc) = (i + 3..(i + 8 + included.len()).min(lines.len()))
             .find(|&k| lines[k].contains("FLIGHT CONDITIONS") && lines[k].contains("REFERENCE"))
         else {
             continue;
@@ -331,11 +343,18 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             let end = (fc + 5..lines.len())
                 .find(|&k| lines[k].starts_with('1'))
                 .unwrap_or(lines.len());
+            // The page without power or ground effects when there are both.
             if let Some(c) = cases.last_mut().filter(|_| !new_case).and_then(|case| {
-                case.conditions
-                    .iter_mut()
-                    .rev()
-                    .find(|c| same_page(c, &configuration, &row))
+                let k = case
+                    .conditions
+                    .iter()
+                    .rposition(|c| same_page(c, &configuration, &row) && c.included.is_empty())
+                    .or_else(|| {
+                        case.conditions
+                            .iter()
+                            .rposition(|c| same_page(c, &configuration, &row))
+                    })?;
+                case.conditions.get_mut(k)
             }) {
                 let aux = c.auxiliary.get_or_insert_with(Default::default);
                 super::auxiliary::read_page(&lines[fc + 5..end], aux);
@@ -389,10 +408,13 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
                 .unwrap_or_default();
         }
         let same = |c: &ListedCondition| same_page(c, &configuration, &row);
+        // A static page goes with the dynamic page of its configuration, condition and
+        // inclusions; a dynamic page (the original's include no power or ground effects) with
+        // the first static page of its configuration and condition.
         let idx = match case.conditions.iter().position(|c| {
             same(c)
                 && if is_static {
-                    c.statics.is_none()
+                    c.statics.is_none() && c.included == included
                 } else {
                     c.dynamics.is_none()
                 }
@@ -402,6 +424,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
                 case.conditions.push(ListedCondition {
                     row,
                     configuration: configuration.clone(),
+                    included: if is_static { included } else { Vec::new() },
                     deriv_per_radian: per_radian,
                     statics: None,
                     dynamics: None,
