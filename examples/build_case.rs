@@ -147,7 +147,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             println!("  downwash at the tail, deg: {}", eps.join(""));
         }
     }
-    for w in &results.warnings {
+    for w in datcom::warning::texts(&results.warnings) {
         eprintln!("warning: {w}");
     }
     // The warnings are typed: what a method found, matched on without reading text.

@@ -230,6 +230,8 @@ pub struct SectionResult {
     pub surface: Surface,
     pub coordinates: Option<SectionCoordinates>,
     pub characteristics: Option<SectionCharacteristics>,
+    /// What was assumed or could not be computed for the section, one per flight condition
+    /// where it repeats.
     pub warnings: Vec<Warning>,
 }
 
@@ -246,6 +248,9 @@ pub struct CaseResults {
     /// Sections of the wing, horizontal tail, vertical tail and ventral fin that have one.
     pub sections: Vec<SectionResult>,
     pub conditions: Vec<ConditionResults>,
+    /// What was assumed or could not be computed, the first of equal warnings only. Two
+    /// warnings that differ beyond their printed digits are both here and read the same:
+    /// [`crate::warning::texts`] gives each text once, as the reports write them.
     pub warnings: Vec<Warning>,
     /// The case's whole configuration as the original names it. No page has this name when
     /// the build-up has no page for the combination (a wing and tails without a body, ...):
@@ -510,13 +515,10 @@ fn vertical_tail_sideslip(
     }
     if !lateral::twin_panels_counted(case, condition_index) {
         let mach = case.conditions.get(condition_index).map_or(0.0, |c| c.mach);
-        warnings.push(
-            format!(
+        warnings.push(Warning::text(format!(
             "Mach {mach:.3}: the lateral stability derivatives do not include the effects of the \
              twin vertical panels (no DATCOM method above STMACH)"
-        )
-            .into(),
-        );
+        )));
         return Ok(fin);
     }
     let twin = lateral::twin_panel_lateral(case, alpha_deg)?;
@@ -881,13 +883,24 @@ fn body_horizontal_tail_coefficients(
         section.as_ref(),
         Some(tail.in_place()),
     )?;
-    // The tail is in the wing's place: its page's labels and moment.
+    // The tail is in the wing's place: its page's labels, and its moment where that is not
+    // applicable (said in words).
     let label = |w: Warning| {
-        Warning::text(
-            w.to_string()
-                .replacen("wing-body", "body-horizontal tail", 1)
-                .replace("(the wing's moment is not)", "(the tail's moment is not)"),
-        )
+        use crate::methods::wing_body::WingBodyWarning;
+        use crate::warning::Detail;
+        let in_words = matches!(
+            w.detail(),
+            Detail::WingBody(WingBodyWarning::MomentNotApplicable { .. })
+        ) || w.label().is_none();
+        if in_words {
+            Warning::text(
+                w.to_string()
+                    .replacen("wing-body", "body-horizontal tail", 1)
+                    .replace("(the wing's moment is not)", "(the tail's moment is not)"),
+            )
+        } else {
+            w.renamed("wing-body", "body-horizontal tail")
+        }
     };
     Ok((s, warnings.into_iter().map(label).collect()))
 }

@@ -3,7 +3,9 @@
 //! variants and reads no warning text does not pay for formatting it; one that does can match
 //! on [`Detail`] instead of parsing text.
 
+use std::collections::HashMap;
 use std::fmt;
+use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use serde::{Serialize, Serializer};
 
@@ -30,14 +32,24 @@ pub struct Warning {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum Detail {
+    /// In words only: notes of the run (build-up implied, conditions derived, ...), a method's
+    /// error, a section's reading.
     Text(String),
+    /// A chart read outside its data (the low-aspect-ratio wing-body's charts).
     Chart(ChartWarning),
+    /// The body-alone methods' (DATCOM 4.2).
     Body(BodyWarning),
+    /// The wing-alone methods' (DATCOM 4.1).
     Wing(WingWarning),
+    /// The wing-body methods' (DATCOM 4.3).
     WingBody(WingBodyWarning),
+    /// The tails' and the configuration's (DATCOM 4.4-4.5), with their surfaces' as wings.
     Tail(TailWarning),
+    /// The sideslip derivatives' (DATCOM 5).
     Lateral(LateralWarning),
+    /// The dynamic derivatives' (DATCOM 7).
     Dynamic(DynamicWarning),
+    /// The airfoil section method's (DATCOM 4.1.1).
     Section(SectionWarning),
 }
 
@@ -75,6 +87,29 @@ impl Warning {
     /// What the warning says, without where it arose.
     pub fn detail(&self) -> &Detail {
         &self.detail
+    }
+
+    /// Where the warning arose, as its text begins (`wing-body, sideslip`, `Mach 0.0588:
+    /// dynamic derivatives`, `WING section`); none for a warning of the whole case.
+    pub fn label(&self) -> Option<String> {
+        match &self.context {
+            Context::Case => None,
+            Context::Part(label) => Some((*label).to_string()),
+            Context::Sideslip(label) => Some(format!("{label}, sideslip")),
+            Context::Dynamic { mach } => Some(format!("Mach {mach}: dynamic derivatives")),
+            Context::Section(surface) => Some(format!("{} section", surface.name())),
+        }
+    }
+
+    /// The same warning said of part `to` where it was said of part `from` (a page computed
+    /// by another configuration's methods, e.g. the horizontal tail in the wing's place).
+    pub(crate) fn renamed(self, from: &str, to: &'static str) -> Warning {
+        let context = match self.context {
+            Context::Part(label) if label == from => Context::Part(to),
+            Context::Sideslip(label) if label == from => Context::Sideslip(to),
+            other => other,
+        };
+        Warning { context, ..self }
     }
 
     /// The chart reading that left the chart's data, when this warning is one (see
@@ -196,25 +231,95 @@ impl Serialize for Warning {
 }
 
 /// The warnings' texts in order, each said once: two warnings that differ only beyond the
-/// printed digits read the same and are written once.
+/// printed digits read the same and are written once. (A result's list keeps both: it
+/// drops only equal warnings.)
 pub fn texts(warnings: &[Warning]) -> Vec<String> {
-    let mut seen = std::collections::BTreeSet::new();
-    warnings
-        .iter()
-        .map(ToString::to_string)
-        .filter(|t| seen.insert(t.clone()))
+    let all: Vec<String> = warnings.iter().map(ToString::to_string).collect();
+    let mut seen = std::collections::HashSet::with_capacity(all.len());
+    let first: Vec<bool> = all.iter().map(|t| seen.insert(t.as_str())).collect();
+    all.into_iter()
+        .zip(first)
+        .filter_map(|(t, first)| first.then_some(t))
         .collect()
 }
 
-/// Keeps the first of equal warnings, in order.
+/// Keeps the first of equal warnings, in order. Warnings are compared only with those of the
+/// same [`Warning::fingerprint`], so that a case with a thousand warnings (a build-up at many
+/// conditions) is not compared pairwise.
 pub(crate) fn dedup(warnings: &mut Vec<Warning>) {
+    // The latest kept warning of each fingerprint, and before each kept warning the one of the
+    // same fingerprint kept before it.
+    let mut latest: HashMap<u64, usize, BuildHasherDefault<Fnv>> =
+        HashMap::with_capacity_and_hasher(warnings.len(), Default::default());
+    let mut earlier: Vec<Option<usize>> = Vec::with_capacity(warnings.len());
     let mut kept: Vec<Warning> = Vec::with_capacity(warnings.len());
     for w in warnings.drain(..) {
-        if !kept.contains(&w) {
+        let f = w.fingerprint();
+        let mut at = latest.get(&f).copied();
+        while let Some(k) = at {
+            if kept[k] == w {
+                break;
+            }
+            at = earlier[k];
+        }
+        if at.is_none() {
+            earlier.push(latest.insert(f, kept.len()));
             kept.push(w);
         }
     }
     *warnings = kept;
+}
+
+/// FNV-1a: fingerprints are a few short fields, hashed once per warning; the standard
+/// hasher's protection against chosen keys buys nothing here.
+struct Fnv(u64);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Fnv(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Hasher for Fnv {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.0 = (self.0 ^ u64::from(*b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+}
+
+impl Warning {
+    /// A hash of what identifies most warnings (where, which kind, and the chart reading when
+    /// there is one), equal for equal warnings. Numbers are hashed by their bits, so that 0 and
+    /// −0 (equal, but printed differently) fall in different groups and are both kept.
+    fn fingerprint(&self) -> u64 {
+        let mut h = Fnv::default();
+        match &self.context {
+            Context::Case => 0u8.hash(&mut h),
+            Context::Part(label) => (1u8, label).hash(&mut h),
+            Context::Sideslip(label) => (2u8, label).hash(&mut h),
+            Context::Dynamic { mach } => (3u8, mach.to_bits()).hash(&mut h),
+            Context::Section(surface) => (4u8, surface.name()).hash(&mut h),
+        }
+        std::mem::discriminant(&self.detail).hash(&mut h);
+        match (&self.detail, self.chart()) {
+            (Detail::Text(t), _) => t.hash(&mut h),
+            (_, Some(c)) => (
+                c.chart.as_str(),
+                c.variable.as_str(),
+                c.value.to_bits(),
+                c.min.to_bits(),
+                c.max.to_bits(),
+            )
+                .hash(&mut h),
+            _ => {}
+        }
+        h.finish()
+    }
 }
 
 #[cfg(test)]
@@ -255,18 +360,79 @@ mod tests {
         assert_eq!(Warning::text("x").chart(), None);
     }
 
+    /// A chart reading of `value` under "tails", printed to four digits.
+    fn reading(value: f64) -> Warning {
+        Warning::new(
+            Context::Part("tails"),
+            ChartWarning {
+                chart: "4.1.3.3-55a".into(),
+                variable: "tan_ratio".into(),
+                value,
+                min: 0.2,
+                max: 1.0,
+                action: crate::charts::Outside::Linear,
+            },
+        )
+    }
+
     #[test]
-    fn equal_texts_are_written_once_and_equal_warnings_kept_once() {
-        let a = Warning::text("a");
-        let b = Warning::new(Context::Part("wing alone"), Detail::Text("a".into()));
-        let mut list = vec![a.clone(), b.clone(), a.clone()];
+    fn results_keep_unequal_warnings_and_the_writers_say_a_text_once_in_order() {
+        // Two readings that differ beyond the printed digits: unequal, one text.
+        let (near, nearer) = (reading(0.10533), reading(0.10534));
+        assert_ne!(near, nearer);
+        assert_eq!(near.to_string(), nearer.to_string());
+        let mut list = vec![
+            Warning::text("b"),
+            near.clone(),
+            Warning::text("a"),
+            nearer.clone(),
+            Warning::text("b"),
+        ];
         dedup(&mut list);
-        assert_eq!(list, vec![a.clone(), b.clone()]);
-        // Different warnings with one text: written once.
-        let same_text = vec![a.clone(), Warning::text("a"), b];
+        // The equal repeat of "b" goes; both readings stay.
         assert_eq!(
-            texts(&same_text),
-            vec!["a".to_string(), "wing alone: a".into()]
+            list,
+            vec![Warning::text("b"), near.clone(), Warning::text("a"), nearer]
         );
+        // Written once each, first occurrences in order (not sorted).
+        assert_eq!(
+            texts(&list),
+            vec!["b".to_string(), near.to_string(), "a".to_string()]
+        );
+    }
+
+    #[test]
+    fn zero_and_minus_zero_are_both_kept() {
+        // Equal numbers printed differently ("Mach 0" and "Mach -0"): both stay, as texts.
+        let zero = Warning::new(Context::Dynamic { mach: 0.0 }, Detail::Text("x".into()));
+        let minus = Warning::new(Context::Dynamic { mach: -0.0 }, Detail::Text("x".into()));
+        assert_eq!(zero, minus);
+        let mut list = vec![zero.clone(), minus.clone()];
+        dedup(&mut list);
+        assert_eq!(list.len(), 2);
+        assert_eq!(texts(&list).len(), 2, "{:?}", texts(&list));
+    }
+
+    #[test]
+    fn many_warnings_are_deduplicated_in_order() {
+        // A thousand warnings, each value three times: the first of each kept, in order.
+        let values: Vec<f64> = (0..1000).map(|k| 0.3 + f64::from(k) * 1e-3).collect();
+        let mut list: Vec<Warning> = (0..3)
+            .flat_map(|_| values.iter().map(|&v| reading(v)))
+            .collect();
+        dedup(&mut list);
+        let expected: Vec<Warning> = values.iter().map(|&v| reading(v)).collect();
+        assert_eq!(list, expected);
+    }
+
+    #[test]
+    fn a_warning_is_said_of_another_part_by_its_context() {
+        let w = Warning::new(Context::Sideslip("wing-body"), LateralWarning::NoBodyAtFin)
+            .renamed("wing-body", "body-horizontal tail");
+        assert_eq!(w.label().as_deref(), Some("body-horizontal tail, sideslip"));
+        assert_eq!(Warning::text("x").label(), None);
+        let other = Warning::new(Context::Part("tails"), LateralWarning::NoBodyAtFin)
+            .renamed("wing-body", "body-horizontal tail");
+        assert_eq!(other.label().as_deref(), Some("tails"));
     }
 }

@@ -216,3 +216,33 @@ fn for006_pages_read_back_to_our_numbers() {
     }
     assert!(tables > 0, "the example has a page with a horizontal tail");
 }
+
+/// The case's warnings are written once per text; a section's are written each, one per flight
+/// condition where they repeat (the example's two altitudes give each Mach number's line
+/// twice), as the reports always wrote them.
+#[test]
+fn case_warnings_are_said_once_and_section_warnings_each() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let deck = datcom::read_deck_file(&path)
+        .expect("the bundled deck")
+        .with_original_rules();
+    let r = datcom::run(&deck);
+    let text = datcom::report::text::to_string(&r);
+    let line = "warning: WING section: no Reynolds number for Mach 0.06: the section characteristics use 1e6";
+    assert_eq!(text.matches(line).count(), 2, "{text}");
+    let v: serde_json::Value =
+        serde_json::from_str(&datcom::report::json::to_string(&r)).expect("JSON");
+    let wing = v["cases"][0]["sections"]["WING"]["warnings"]
+        .as_array()
+        .expect("the wing section's warnings");
+    assert_eq!(wing.len(), 4, "{wing:?}");
+    let said: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with(" warning (case 1)"))
+        .collect();
+    let mut once = said.clone();
+    once.sort_unstable();
+    once.dedup();
+    assert_eq!(once.len(), said.len(), "a case warning said twice");
+    assert!(!said.is_empty());
+}

@@ -168,7 +168,8 @@ fn section_json(s: &crate::results::SectionResult) -> SectionJson {
         max_thickness: k.map(|k| k.max_thickness),
         delta_y: k.map(|k| k.delta_y_percent),
         per_mach,
-        warnings: crate::warning::texts(&s.warnings),
+        // Each of a section's warnings (one per condition where they repeat), as ever.
+        warnings: s.warnings.iter().map(ToString::to_string).collect(),
     }
 }
 

@@ -290,7 +290,8 @@ pub fn section_pages(case: &CaseResults) -> String {
                 let _ = writeln!(s, "{m}");
             }
         }
-        for w in crate::warning::texts(&section.warnings) {
+        // Each of a section's warnings (one per condition where they repeat), as ever.
+        for w in &section.warnings {
             let _ = writeln!(s, " warning: {w}");
         }
     }
