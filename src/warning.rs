@@ -7,6 +7,8 @@ use std::collections::HashMap;
 use std::fmt;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 
+use crate::charts::IdHasher;
+
 use serde::{Serialize, Serializer};
 
 use crate::charts::ChartWarning;
@@ -28,10 +30,34 @@ pub struct Warning {
     detail: Detail,
 }
 
-/// What a warning says: a method's own warning, or text.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum Detail {
+/// [`Detail`]: one variant a kind of warning, each made from its warning (`From`) and said as
+/// that warning says itself (`Display`).
+macro_rules! details {
+    ($($(#[$doc:meta])* $variant:ident($ty:ty)),* $(,)?) => {
+        /// What a warning says: a method's own warning, or text.
+        #[derive(Debug, Clone, PartialEq)]
+        #[non_exhaustive]
+        pub enum Detail {
+            $($(#[$doc])* $variant($ty),)*
+        }
+
+        $(impl From<$ty> for Detail {
+            fn from(w: $ty) -> Self {
+                Detail::$variant(w)
+            }
+        })*
+
+        impl fmt::Display for Detail {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                match self {
+                    $(Detail::$variant(w) => fmt::Display::fmt(w, f),)*
+                }
+            }
+        }
+    };
+}
+
+details! {
     /// In words only: notes of the run (build-up implied, conditions derived, ...), a method's
     /// error, a section's reading.
     Text(String),
@@ -173,44 +199,6 @@ impl From<&str> for Warning {
     }
 }
 
-macro_rules! detail_from {
-    ($($variant:ident($ty:ty)),* $(,)?) => {
-        $(impl From<$ty> for Detail {
-            fn from(w: $ty) -> Self {
-                Detail::$variant(w)
-            }
-        })*
-    };
-}
-
-detail_from!(
-    Text(String),
-    Chart(ChartWarning),
-    Body(BodyWarning),
-    Wing(WingWarning),
-    WingBody(WingBodyWarning),
-    Tail(TailWarning),
-    Lateral(LateralWarning),
-    Dynamic(DynamicWarning),
-    Section(SectionWarning),
-);
-
-impl fmt::Display for Detail {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Detail::Text(t) => f.write_str(t),
-            Detail::Chart(w) => w.fmt(f),
-            Detail::Body(w) => w.fmt(f),
-            Detail::Wing(w) => w.fmt(f),
-            Detail::WingBody(w) => w.fmt(f),
-            Detail::Tail(w) => w.fmt(f),
-            Detail::Lateral(w) => w.fmt(f),
-            Detail::Dynamic(w) => w.fmt(f),
-            Detail::Section(w) => w.fmt(f),
-        }
-    }
-}
-
 impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.context {
@@ -249,7 +237,7 @@ pub fn texts(warnings: &[Warning]) -> Vec<String> {
 pub(crate) fn dedup(warnings: &mut Vec<Warning>) {
     // The latest kept warning of each fingerprint, and before each kept warning the one of the
     // same fingerprint kept before it.
-    let mut latest: HashMap<u64, usize, BuildHasherDefault<Fnv>> =
+    let mut latest: HashMap<u64, usize, BuildHasherDefault<IdHasher>> =
         HashMap::with_capacity_and_hasher(warnings.len(), Default::default());
     let mut earlier: Vec<Option<usize>> = Vec::with_capacity(warnings.len());
     let mut kept: Vec<Warning> = Vec::with_capacity(warnings.len());
@@ -270,34 +258,12 @@ pub(crate) fn dedup(warnings: &mut Vec<Warning>) {
     *warnings = kept;
 }
 
-/// FNV-1a: fingerprints are a few short fields, hashed once per warning; the standard
-/// hasher's protection against chosen keys buys nothing here.
-struct Fnv(u64);
-
-impl Default for Fnv {
-    fn default() -> Self {
-        Fnv(0xcbf2_9ce4_8422_2325)
-    }
-}
-
-impl Hasher for Fnv {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for b in bytes {
-            self.0 = (self.0 ^ u64::from(*b)).wrapping_mul(0x0100_0000_01b3);
-        }
-    }
-}
-
 impl Warning {
     /// A hash of what identifies most warnings (where, which kind, and the chart reading when
     /// there is one), equal for equal warnings. Numbers are hashed by their bits, so that 0 and
     /// −0 (equal, but printed differently) fall in different groups and are both kept.
     fn fingerprint(&self) -> u64 {
-        let mut h = Fnv::default();
+        let mut h = IdHasher::default();
         match &self.context {
             Context::Case => 0u8.hash(&mut h),
             Context::Part(label) => (1u8, label).hash(&mut h),

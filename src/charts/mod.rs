@@ -397,10 +397,10 @@ fn registry() -> &'static Registry {
     })
 }
 
-/// FNV-1a, the hash of the chart index: chart ids are short strings fixed at build time, so
-/// the standard hasher's protection against chosen keys buys nothing and costs several times
-/// more per lookup.
-struct IdHasher(u64);
+/// FNV-1a, the hash of the chart index (and of warnings' fingerprints): chart ids are short
+/// strings fixed at build time, so the standard hasher's protection against chosen keys buys
+/// nothing and costs several times more per lookup.
+pub(crate) struct IdHasher(u64);
 
 impl Default for IdHasher {
     fn default() -> Self {
