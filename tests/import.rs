@@ -69,20 +69,9 @@ fn navion_listing_values() {
     assert_eq!(c["mach"], 0.158);
 }
 
-/// A page the original prints with power (or ground) effects included carries the note under
-/// its configuration line. The importer keeps the note (`included`), reads the CASEID from the
-/// line after it, and puts the configuration's dynamic page with it; `compare` counts such a
-/// page's static and downwash numbers as having no counterpart in a page without the effects
-/// (ours computes neither), and compares its dynamic derivatives.
-#[test]
-fn a_page_with_power_effects_is_marked_and_not_compared_with_a_power_off_one() {
-    const NOTE: &str = "PROPELLER POWER EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS";
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
-    let deck = datcom::read_deck_file(&path).expect("the bundled deck");
-    let results = datcom::run(&deck);
-    let listing = datcom::report::for006::to_string(&results);
-    let configuration = results.cases[0].conditions[0].configuration.clone();
-    // The note under the configuration line of the static page, as the original prints it.
+/// Our own listing of the bundled example with `note` printed under the first static page's
+/// configuration line, as the original prints the effects a page includes.
+fn with_note(listing: &str, configuration: &str, note: &str) -> String {
     let mut lines: Vec<String> = listing.lines().map(str::to_string).collect();
     let at = lines
         .iter()
@@ -93,47 +82,85 @@ fn a_page_with_power_effects_is_marked_and_not_compared_with_a_power_off_one() {
         configuration,
         "the configuration line"
     );
-    lines.insert(at + 2, format!("{:>31}{NOTE}", ""));
-    let powered = lines.join("\n");
+    lines.insert(at + 2, format!("{:>31}{note}", ""));
+    lines.join("\n")
+}
 
-    let plain = legacy::read_listing(&listing);
-    let read = legacy::read_listing(&powered);
-    let page = &read[0].conditions[0];
-    assert_eq!(page.included, vec![NOTE.to_string()]);
-    assert!(plain[0].conditions[0].included.is_empty());
-    assert_eq!(
-        read[0].caseid, plain[0].caseid,
-        "the CASEID is not the note"
-    );
-    assert!(page.statics.is_some() && page.dynamics.is_some());
-
+/// A page the original prints with power (or ground) effects included carries the note under
+/// its configuration line. The importer keeps the note (`included`), reads the CASEID from the
+/// line after it, and puts the configuration's dynamic page with it. `compare` counts as
+/// missing, against a page without the effects (ours), the numbers the effects change: with
+/// power CD, CL, CM, CN, CA and XCP; at a ground height every static and downwash number;
+/// out of ground effect (FREE AIR) none. The dynamic derivatives include neither.
+#[test]
+fn a_page_with_power_or_ground_effects_is_marked_and_compared_for_what_they_leave() {
+    const POWER: &str = "PROPELLER POWER EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS";
+    const GROUND: &str =
+        "GROUND EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS , GROUND HEIGHT=   5.00";
+    const FREE_AIR: &str =
+        "GROUND EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS , GROUND HEIGHT= FREE AIR";
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let deck = datcom::read_deck_file(&path).expect("the bundled deck");
+    let results = datcom::run(&deck);
+    let listing = datcom::report::for006::to_string(&results);
+    let configuration = results.cases[0].conditions[0].configuration.clone();
     let ours: serde_json::Value =
         serde_json::from_str(&json::to_string(&results)).expect("our JSON");
-    let reference: serde_json::Value =
-        serde_json::from_str(&json::listing_to_string(&powered, "powered")).expect("imported");
-    assert_eq!(reference["cases"][0]["conditions"][0]["included"][0], NOTE);
-    let rows = compare::compare(&ours, &reference);
-    let row = |name: &str| {
+    let agreement = |listing: &str| {
+        let reference: serde_json::Value =
+            serde_json::from_str(&json::listing_to_string(listing, "x")).expect("imported");
+        compare::compare(&ours, &reference)
+    };
+    let plain = agreement(&listing);
+    let counts = |rows: &[compare::ColumnAgreement], name: &str| {
         rows.iter()
             .find(|r| r.coefficient == name)
+            .map(|r| (r.compared, r.missing))
             .unwrap_or_else(|| panic!("{name} compared"))
     };
-    // Without the note, every number is compared.
-    let unpowered: serde_json::Value =
-        serde_json::from_str(&json::listing_to_string(&listing, "plain")).expect("imported");
-    let plain_rows = compare::compare(&ours, &unpowered);
-    let plain_row = |name: &str| plain_rows.iter().find(|r| r.coefficient == name).unwrap();
-    assert_eq!(plain_row("CL").missing, 0);
+    assert_eq!(counts(&plain, "CL").1, 0);
     let n = results.cases[0].conditions[0].alpha_deg.len();
+    let fewer = |name: &str| (counts(&plain, name).0 - n, n);
+
+    let powered = with_note(&listing, &configuration, POWER);
+    let read = legacy::read_listing(&powered);
+    let page = &read[0].conditions[0];
+    assert_eq!(page.included, vec![POWER.to_string()]);
+    assert_eq!(read[0].caseid, legacy::read_listing(&listing)[0].caseid);
+    assert!(page.statics.is_some() && page.dynamics.is_some());
+    let rows = agreement(&powered);
+    for name in ["CD", "CL", "CM", "CN", "CA", "XCP"] {
+        assert_eq!(counts(&rows, name), fewer(name), "{name} with power");
+    }
+    for name in ["CLA", "CMA", "CLB", "CLQ", "CLP", "EPSLON"] {
+        assert_eq!(
+            counts(&rows, name),
+            counts(&plain, name),
+            "{name} with power"
+        );
+    }
+
+    let rows = agreement(&with_note(&listing, &configuration, GROUND));
+    for name in ["CL", "CLA", "CLB", "EPSLON"] {
+        assert_eq!(counts(&rows, name), fewer(name), "{name} in ground effect");
+    }
+    assert_eq!(counts(&rows, "CLQ"), counts(&plain, "CLQ"));
+
+    let rows = agreement(&with_note(&listing, &configuration, FREE_AIR));
+    for name in ["CL", "CLA", "CLQ", "EPSLON"] {
+        assert_eq!(
+            counts(&rows, name),
+            counts(&plain, name),
+            "{name} out of ground effect"
+        );
+    }
+
+    // A CASEID that says "included in" is a CASEID, not a note.
+    let caseid = with_note(&listing, &configuration, "FLAPS INCLUDED IN THIS RUN");
+    let read = legacy::read_listing(&caseid);
+    assert!(read[0].conditions[0].included.is_empty());
     assert_eq!(
-        row("CL").missing,
-        n,
-        "the powered page's CL has no counterpart"
-    );
-    assert_eq!(row("CL").compared, plain_row("CL").compared - n);
-    assert_eq!(
-        (row("CLQ").compared, row("CLQ").missing),
-        (plain_row("CLQ").compared, 0),
-        "the dynamic derivatives are compared"
+        read[0].caseid.as_deref(),
+        Some("FLAPS INCLUDED IN THIS RUN")
     );
 }

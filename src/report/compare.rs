@@ -192,6 +192,43 @@ fn numbers(v: &Value) -> Vec<Option<f64>> {
 
 /// Compares every coefficient of `ours` with `reference` (both in the JSON shape of `run`),
 /// case by case and condition by condition in order; worst agreement first.
+/// What the effects a page includes (`included`, the original's notes under its
+/// configuration line) change, from the least to the most.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Effects {
+    /// None (or out of ground effect: `GROUND HEIGHT= FREE AIR`).
+    None,
+    /// Power: the original adds its increments to CD, CL, CM, CN and CA (XCP follows) and
+    /// prints the slopes, the sideslip derivatives and the downwash as without power.
+    Power,
+    /// Ground effects at a height: every static and downwash number.
+    Ground,
+}
+
+/// The static columns power effects change ([`Effects::Power`]).
+const POWER_COLUMNS: [&str; 6] = ["CD", "CL", "CM", "CN", "CA", "XCP"];
+
+fn effects(page: &Value) -> Effects {
+    let notes = page["included"]
+        .as_array()
+        .map(Vec::as_slice)
+        .unwrap_or(&[]);
+    notes
+        .iter()
+        .filter_map(Value::as_str)
+        .map(|n| {
+            if n.contains("FREE AIR") {
+                Effects::None
+            } else if n.contains("POWER EFFECTS INCLUDED") {
+                Effects::Power
+            } else {
+                Effects::Ground
+            }
+        })
+        .max()
+        .unwrap_or(Effects::None)
+}
+
 pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
     let mut out: Vec<ColumnAgreement> = STATIC
         .iter()
@@ -223,41 +260,52 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
             };
             p.0 == q.0 && near(p.1, q.1) && near(p.2, q.2)
         };
+        // Pages with power or ground effects included are paired after the others, so that a
+        // page without them (printed before or after them) finds its counterpart first.
+        let mut counterpart: Vec<Option<usize>> = vec![None; cb.len()];
         let mut used = vec![false; ca.len()];
-        let mut pairs = Vec::new();
-        for y in cb {
-            let ky = key(y);
-            if let Some(i) = (0..ca.len()).find(|&i| !used[i] && same(&key(&ca[i]), &ky)) {
-                used[i] = true;
-                pairs.push((&ca[i], y));
-            } else {
-                // No counterpart: every reference number of this entry is missing on our side.
-                pairs.push((&Value::Null, y));
+        for with_effects in [false, true] {
+            for (j, y) in cb.iter().enumerate() {
+                if (effects(y) != Effects::None) != with_effects {
+                    continue;
+                }
+                let ky = key(y);
+                if let Some(i) = (0..ca.len()).find(|&i| !used[i] && same(&key(&ca[i]), &ky)) {
+                    used[i] = true;
+                    counterpart[j] = Some(i);
+                }
             }
         }
-        for (ki, (x, y)) in pairs.into_iter().enumerate() {
-            // A reference page with power or ground effects included (`included`, from a
-            // listing) paired with a page without them (ours computes neither): its static and
-            // downwash numbers have no counterpart; its dynamic derivatives include neither
-            // effect and are compared.
-            let included = |v: &Value| v["included"].as_array().cloned().unwrap_or_default();
-            let with_effects = included(y) != included(x);
+        // Without a counterpart every reference number of the entry is missing on our side.
+        let pairs = cb
+            .iter()
+            .zip(counterpart)
+            .map(|(y, i)| (i.map_or(&Value::Null, |i| &ca[i]), y));
+        for (ki, (x, y)) in pairs.enumerate() {
+            // A reference page with effects that our page does not include (ours includes
+            // neither power nor ground effects): the numbers they change have no counterpart.
+            let differ = if x["included"] == y["included"] {
+                Effects::None
+            } else {
+                effects(x).max(effects(y))
+            };
             for (block, names) in [
                 ("static", &STATIC[..]),
                 ("dynamic", &DYNAMIC[..]),
                 ("downwash", &DOWNWASH[..]),
             ] {
-                let x = if with_effects && block != "dynamic" {
-                    &Value::Null
-                } else {
-                    x
-                };
                 let alpha = numbers(&y[block]["alpha"]);
                 for name in names {
                     let col = out
                         .iter_mut()
                         .find(|c| c.coefficient == *name)
                         .expect("every coefficient has an entry");
+                    let changed = match differ {
+                        Effects::None => false,
+                        Effects::Power => block == "static" && POWER_COLUMNS.contains(name),
+                        Effects::Ground => block != "dynamic",
+                    };
+                    let x = if changed { &Value::Null } else { x };
                     let ov = numbers(&x[block][name]);
                     for (i, r) in numbers(&y[block][name]).iter().enumerate() {
                         let Some(r) = r else { continue };

@@ -277,6 +277,16 @@ pub struct ListedCase {
     pub conditions: Vec<ListedCondition>,
 }
 
+/// Whether a line under a page's configuration is the original's note of the effects the page
+/// includes: power (`PROPELLER POWER EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS`,
+/// the jet's), ground effects (`GROUND EFFECTS INCLUDED IN THE LONGITUDINAL STABILITY RESULTS ,
+/// GROUND HEIGHT= ...`) and the flap in ground effect (`WING FLAP DEFLECTION INCLUDED IN GROUND
+/// EFFECTS DATA, ...`), and not a CASEID.
+fn is_effects_note(line: &str) -> bool {
+    line.contains("INCLUDED IN THE LONGITUDINAL STABILITY RESULTS")
+        || line.contains("INCLUDED IN GROUND EFFECTS DATA")
+}
+
 /// Whether `c` is of the configuration and flight-condition row printed.
 fn same_page(c: &ListedCondition, configuration: &str, row: &ConditionRow) -> bool {
     c.configuration == configuration
@@ -313,7 +323,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
         let included: Vec<String> = lines[(i + 3).min(lines.len())..]
             .iter()
             .map(|s| s.trim())
-            .take_while(|s| s.contains(" INCLUDED IN "))
+            .take_while(|s| is_effects_note(s))
             .map(str::to_string)
             .collect();
         let caseid = lines
@@ -343,17 +353,17 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             let end = (fc + 5..lines.len())
                 .find(|&k| lines[k].starts_with('1'))
                 .unwrap_or(lines.len());
-            // The page without power or ground effects when there are both.
+            // Of the pages read so far, the latest with the fewest effects included: the page
+            // without power effects before the page with them (BUILD), at the ground height
+            // being printed.
             if let Some(c) = cases.last_mut().filter(|_| !new_case).and_then(|case| {
-                let k = case
+                let (k, _) = case
                     .conditions
                     .iter()
-                    .rposition(|c| same_page(c, &configuration, &row) && c.included.is_empty())
-                    .or_else(|| {
-                        case.conditions
-                            .iter()
-                            .rposition(|c| same_page(c, &configuration, &row))
-                    })?;
+                    .enumerate()
+                    .rev()
+                    .filter(|(_, c)| same_page(c, &configuration, &row))
+                    .min_by_key(|(_, c)| c.included.len())?;
                 case.conditions.get_mut(k)
             }) {
                 let aux = c.auxiliary.get_or_insert_with(Default::default);
