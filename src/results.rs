@@ -374,16 +374,12 @@ fn add_sideslip(
 ) {
     match lateral {
         Ok(lat) => {
-            warnings.extend(
-                lat.warnings
-                    .iter()
-                    .map(|x| Warning::new(Context::Sideslip(label), x.clone())),
-            );
+            warnings.extend(Warning::all_under(Context::Sideslip(label), &lat.warnings));
             s.cyb = lat.cyb;
             s.cnb = lat.cnb;
             s.clb = lat.clb;
         }
-        Err(e) => warnings.push(format!("{label}, sideslip: {e}").into()),
+        Err(e) => warnings.push(Warning::new(Context::Sideslip(label), e)),
     }
 }
 
@@ -406,11 +402,8 @@ fn low_aspect_ratio_coefficients(
     };
     let page = lar::low_aspect_ratio_wing_body(lb, flight, alpha_deg)
         .map_err(|e| format!("low-aspect-ratio wing-body: {e}"))?;
-    let mut warnings: Vec<Warning> = page
-        .warnings
-        .iter()
-        .map(|w| Warning::new(Context::Part("low-aspect-ratio wing-body"), w.clone()))
-        .collect();
+    let mut warnings: Vec<Warning> =
+        Warning::all_under(Context::Part("low-aspect-ratio wing-body"), &page.warnings).collect();
     let some = |v: &[f64]| {
         v.iter()
             .map(|x| Some(*x).filter(|y| y.is_finite()))
@@ -446,11 +439,8 @@ fn body_alone_coefficients(
     let geometry = crate::geometry::body(body).map_err(|e| format!("body geometry: {e}"))?;
     let b = crate::methods::body::body_alone(case, &geometry, condition, alpha_deg)
         .map_err(|e| format!("body alone: {e}"))?;
-    let mut warnings: Vec<Warning> = b
-        .warnings
-        .iter()
-        .map(|w| Warning::new(Context::Part("body alone"), w.clone()))
-        .collect();
+    let mut warnings: Vec<Warning> =
+        Warning::all_under(Context::Part("body alone"), &b.warnings).collect();
     // Sideslip derivatives of the body alone (DATCOM 5.2.1.1 as the original forms them).
     let lateral = crate::methods::lateral::body_lateral(&b, case);
     let mut s = longitudinal!(b, alpha_deg.len());
@@ -469,11 +459,8 @@ fn wing_alone_coefficients(
     let w =
         crate::methods::wing::wing_alone_with_section(case, condition_index, alpha_deg, section)
             .map_err(|e| format!("wing alone: {e}"))?;
-    let mut warnings: Vec<Warning> = w
-        .warnings
-        .iter()
-        .map(|x| Warning::new(Context::Part("wing alone"), x.clone()))
-        .collect();
+    let mut warnings: Vec<Warning> =
+        Warning::all_under(Context::Part("wing alone"), &w.warnings).collect();
     // Sideslip derivatives of the wing alone (DATCOM 5.1.2.1).
     let lateral = crate::methods::lateral::wing_lateral(case, condition_index, alpha_deg, &w)
         .map_err(|e| e.to_string());
@@ -554,11 +541,8 @@ fn tail_configuration_coefficients(
         _ => t.wing_body_vertical_tail_horizontal_tail.as_ref(),
     }
     .ok_or_else(|| format!("{part}: not computed"))?;
-    let mut warnings: Vec<Warning> = t
-        .warnings
-        .iter()
-        .map(|w| Warning::new(Context::Part("tails"), w.clone()))
-        .collect();
+    let mut warnings: Vec<Warning> =
+        Warning::all_under(Context::Part("tails"), &t.warnings).collect();
     let mut s = coefficients(c);
     let alpha = &t.alpha_deg;
     let wb = &t.terms.wing_body;
@@ -618,11 +602,8 @@ fn wing_body_coefficients(
         in_place,
     )
     .map_err(|e| format!("wing-body: {e}"))?;
-    let mut warnings: Vec<Warning> = w
-        .warnings
-        .iter()
-        .map(|x| Warning::new(Context::Part("wing-body"), x.clone()))
-        .collect();
+    let mut warnings: Vec<Warning> =
+        Warning::all_under(Context::Part("wing-body"), &w.warnings).collect();
     // Sideslip derivatives of the wing-body (DATCOM 5.2.2.1, 5.2.3.1), which need the wing
     // alone as well.
     let lateral =
@@ -660,12 +641,8 @@ fn horizontal_tail_coefficients(
 ) -> Result<(StaticCoefficients, Vec<Warning>), String> {
     let t = crate::methods::tail::horizontal_tail_alone(case, condition_index, alpha_deg)
         .map_err(|e| format!("horizontal tail alone: {e}"))?;
-    let mut warnings: Vec<Warning> = t
-        .surface
-        .warnings
-        .iter()
-        .map(|x| Warning::new(Context::Part("horizontal tail alone"), x.clone()))
-        .collect();
+    let mut warnings: Vec<Warning> =
+        Warning::all_under(Context::Part("horizontal tail alone"), &t.surface.warnings).collect();
     let mut s = coefficients(&crate::methods::tail::Coefficients::resolved(
         alpha_deg,
         t.surface.cd.clone(),
@@ -1062,16 +1039,12 @@ fn dynamic_derivatives(
     })();
     match computed {
         Ok(d) => {
-            let warnings = d
-                .warnings
-                .iter()
-                .map(|w| Warning::new(Context::Dynamic { mach }, w.clone()))
-                .collect();
+            let warnings = Warning::all_under(Context::Dynamic { mach }, &d.warnings).collect();
             (DynamicDerivatives::from_columns(&d), warnings)
         }
         Err(e) => (
             DynamicDerivatives::empty(n),
-            vec![format!("Mach {mach}: dynamic derivatives: {e}").into()],
+            vec![Warning::new(Context::Dynamic { mach }, e)],
         ),
     }
 }
@@ -1597,29 +1570,22 @@ fn sections(case: &Case) -> Vec<SectionResult> {
             let coordinates = match section_for(case, surface)? {
                 Ok(c) => Some(c),
                 Err(e) => {
-                    warnings.push(format!("{} section: {e}", surface.name()).into());
+                    warnings.push(Warning::new(Context::Section(surface), e.to_string()));
                     None
                 }
             };
             let characteristics = match surface_section(case, surface) {
                 None => None,
                 Some(Err(e)) => {
-                    warnings.push(format!("{} section: {e}", surface.name()).into());
+                    warnings.push(Warning::new(Context::Section(surface), e.to_string()));
                     None
                 }
                 Some(Ok(s)) => {
-                    warnings.extend(
-                        s.warnings
-                            .iter()
-                            .map(|w| Warning::new(Context::Section(surface), w.clone())),
-                    );
+                    warnings.extend(Warning::all_under(Context::Section(surface), &s.warnings));
                     match section_characteristics(&s.shape, &s.conditions, &s.overrides) {
                         Ok(c) => {
-                            warnings.extend(
-                                c.warnings
-                                    .iter()
-                                    .map(|w| Warning::new(Context::Section(surface), w.clone())),
-                            );
+                            warnings
+                                .extend(Warning::all_under(Context::Section(surface), &c.warnings));
                             Some(c)
                         }
                         Err(e) => {

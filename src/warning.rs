@@ -7,11 +7,9 @@ use std::collections::HashMap;
 use std::fmt;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 
-use crate::charts::IdHasher;
-
 use serde::{Serialize, Serializer};
 
-use crate::charts::ChartWarning;
+use crate::charts::{ChartWarning, IdHasher};
 use crate::deck::cards::Surface;
 use crate::methods::body::BodyWarning;
 use crate::methods::dynamic::DynamicWarning;
@@ -80,7 +78,7 @@ details! {
 }
 
 /// Where a warning arose, the start of its text.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Context {
     /// Said of the case as a whole: no prefix.
     Case,
@@ -110,6 +108,16 @@ impl Warning {
         }
     }
 
+    /// Each of a method's `warnings`, said under `context`.
+    pub(crate) fn all_under<'a, W: Clone + Into<Detail>>(
+        context: Context,
+        warnings: &'a [W],
+    ) -> impl Iterator<Item = Warning> + 'a {
+        warnings
+            .iter()
+            .map(move |w| Warning::new(context, w.clone()))
+    }
+
     /// What the warning says, without where it arose.
     pub fn detail(&self) -> &Detail {
         &self.detail
@@ -118,13 +126,7 @@ impl Warning {
     /// Where the warning arose, as its text begins (`wing-body, sideslip`, `Mach 0.0588:
     /// dynamic derivatives`, `WING section`); none for a warning of the whole case.
     pub fn label(&self) -> Option<String> {
-        match &self.context {
-            Context::Case => None,
-            Context::Part(label) => Some((*label).to_string()),
-            Context::Sideslip(label) => Some(format!("{label}, sideslip")),
-            Context::Dynamic { mach } => Some(format!("Mach {mach}: dynamic derivatives")),
-            Context::Section(surface) => Some(format!("{} section", surface.name())),
-        }
+        (self.context != Context::Case).then(|| self.context.to_string())
     }
 
     /// The same warning said of part `to` where it was said of part `from` (a page computed
@@ -199,14 +201,23 @@ impl From<&str> for Warning {
     }
 }
 
+/// The label a warning's text begins with (nothing for the whole case).
+impl fmt::Display for Context {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Context::Case => Ok(()),
+            Context::Part(label) => f.write_str(label),
+            Context::Sideslip(label) => write!(f, "{label}, sideslip"),
+            Context::Dynamic { mach } => write!(f, "Mach {mach}: dynamic derivatives"),
+            Context::Section(surface) => write!(f, "{} section", surface.name()),
+        }
+    }
+}
+
 impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match &self.context {
-            Context::Case => {}
-            Context::Part(label) => write!(f, "{label}: ")?,
-            Context::Sideslip(label) => write!(f, "{label}, sideslip: ")?,
-            Context::Dynamic { mach } => write!(f, "Mach {mach}: dynamic derivatives: ")?,
-            Context::Section(surface) => write!(f, "{} section: ", surface.name())?,
+        if self.context != Context::Case {
+            write!(f, "{}: ", self.context)?;
         }
         self.detail.fmt(f)
     }

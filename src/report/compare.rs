@@ -190,8 +190,6 @@ fn numbers(v: &Value) -> Vec<Option<f64>> {
         .unwrap_or_default()
 }
 
-/// Compares every coefficient of `ours` with `reference` (both in the JSON shape of `run`),
-/// case by case and condition by condition in order; worst agreement first.
 /// What the effects a page includes (`included`, the original's notes under its
 /// configuration line) change, from the least to the most.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -208,6 +206,7 @@ enum Effects {
 /// The static columns power effects change ([`Effects::Power`]).
 const POWER_COLUMNS: [&str; 6] = ["CD", "CL", "CM", "CN", "CA", "XCP"];
 
+/// The most a page's notes change (none without notes).
 fn effects(page: &Value) -> Effects {
     let notes = page["included"]
         .as_array()
@@ -229,6 +228,10 @@ fn effects(page: &Value) -> Effects {
         .unwrap_or(Effects::None)
 }
 
+/// Compares every coefficient of `ours` with `reference` (both in the JSON shape of `run`),
+/// case by case and condition by condition in order; worst agreement first. A reference page
+/// with power or ground effects that ours does not include has the numbers they change
+/// counted as missing ([`Effects`]).
 pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
     let mut out: Vec<ColumnAgreement> = STATIC
         .iter()
