@@ -1520,3 +1520,149 @@ fn a_jorgensen_bodys_wing_body_drag_takes_the_axisymmetric_lift_drag() {
         "{jorgensen}: Jorgensen's body's drag due to lift"
     );
 }
+
+/// The warning texts of every case of a run.
+fn warning_texts(r: &datcom::Results) -> Vec<String> {
+    r.cases
+        .iter()
+        .flat_map(|c| c.warnings.iter().map(|w| w.to_string()))
+        .collect()
+}
+
+/// Fuzzing found `$WGSCHR CLMAX=0.0` passing the checks and every coefficient of the case
+/// lost to a chart read at `tan_ratio = inf`: a stall at or below the zero-lift angle makes
+/// the non-linear lift curve divide by zero. The deck's CLMAX must be positive, and a wing
+/// whose maximum lift is not above zero lift is refused with that reason.
+#[test]
+fn maximum_lift_at_or_below_zero_is_refused_not_read_at_infinity() {
+    for clmax in ["0.0", "-1.0"] {
+        let deck = read(&format!(
+            " $FLTCON NMACH=1.0,MACH(1)=0.3,NALPHA=2.0,ALSCHD(1)=0.0,4.0,RNNUB(1)=1.0E6$\n \
+             $SYNTHS XCG=3.0,XW=2.0$\n \
+             $WGPLNF CHRDR=4.0,CHRDTP=2.0,SSPN=10.0,SSPNE=10.0,SAVSI=0.0,CHSTAT=0.25$\n \
+             $WGSCHR CLMAX={clmax}$\nNACA W 4 0012\n"
+        ));
+        assert!(
+            has(&deck, Severity::Error, "CLMAX(1) must be positive"),
+            "CLMAX={clmax}: {:?}",
+            deck.diagnostics
+        );
+        let texts = warning_texts(&datcom::run(&deck));
+        assert!(
+            texts
+                .iter()
+                .all(|t| !t.contains("= inf") && !t.contains("= NaN")),
+            "{texts:?}"
+        );
+        assert!(
+            texts.iter().any(|t| t.contains("is not above zero lift")),
+            "{texts:?}"
+        );
+        no_non_finite(&deck);
+    }
+}
+
+/// Fuzzing found a vertical tail with TYPE other than 1 and no outboard panel (TYPE=0.5, or
+/// 3.0 without SSPNOP) under a horizontal tail above its tip reading figure 5.3.1.1-22b at
+/// `x_over_chord = NaN`: the chord at the horizontal tail's height divided by the outboard
+/// panel's zero span. Without an outboard
+/// panel the fin is straight, whatever TYPE says, and its sideslip derivatives are the straight
+/// fin's.
+#[test]
+fn fin_without_an_outboard_panel_is_straight_whatever_its_type() {
+    let deck = |fin_type: &str| {
+        read(&format!(
+            "BUILD\n $FLTCON MACH(1)=0.3,NALPHA=2.0,ALSCHD(1)=0.0,4.0$\n $SYNTHS ZH=0.191$\n \
+             $BODY X(1)=0.0,0.10433,R(1)=0.05,0.05$\n $WGPLNF CHRDR=0.28,SSPN=1.0625$\n \
+             $HTPLNF CHRDR=0.22,SSPN=0.17$\n \
+             $VTPLNF CHRDR=0.2,CHRDTP=0.2,SSPN=0.16,TYPE={fin_type}$\n\
+             NACA W 4 0012\nNACA H 4 0012\n"
+        ))
+    };
+    let results = |d: &datcom::Deck| {
+        let r = datcom::run(d);
+        let texts = warning_texts(&r);
+        assert!(texts.iter().all(|t| !t.contains("= NaN")), "{texts:?}");
+        r
+    };
+    let straight = results(&deck("1.0"));
+    // The build-up's fin pages have the fin's sideslip.
+    let with_cyb = straight.cases[0]
+        .conditions
+        .iter()
+        .filter(|c| {
+            c.static_coefficients
+                .cyb
+                .iter()
+                .flatten()
+                .any(|x| *x != 0.0)
+        })
+        .count();
+    assert!(with_cyb >= 2, "{with_cyb} pages with a CYB");
+    for fin_type in ["0.5", "3.0"] {
+        let other = results(&deck(fin_type));
+        assert_eq!(
+            datcom::report::json::to_string(&other),
+            datcom::report::json::to_string(&straight),
+            "TYPE={fin_type}"
+        );
+    }
+}
+
+/// Fuzzing found a $LARWB body with SFRONT=0 or HB=0 passing the checks and its page lost to
+/// chart reads at `geometry = NaN` and `base_shape = inf`: the method divides by the frontal
+/// area and by the base's height. Both must be positive; a body without a base (SBASE=0) has
+/// no base drag to grow with the angle and is computed.
+#[test]
+fn lifting_body_without_frontal_area_or_base_height_is_refused() {
+    let deck = |sfront: &str, sbase: &str, hb: &str| {
+        read(&format!(
+            " $FLTCON NMACH=1.0,MACH(1)=0.26,NALT=1.0,ALT(1)=0.0,NALPHA=2.0,ALSCHD(1)=0.0,4.0$\n \
+             $LARWB ZB=0.0,SREF=0.989,DELTEP=90.0,SFRONT={sfront},AR=1.076,L=1.915,SWET=2.28,\n  \
+             PERBAS=2.38,SBASE={sbase},HB={hb},BB=1.03,BLF=.FALSE.,XCG=1.44,THETAD=15.0,\n  \
+             ROUNDN=.FALSE.,SBS=0.54,SBSLB=0.0,XCENSB=1.0,XCENW=1.1$\n"
+        ))
+    };
+    for (d, variable) in [
+        (deck("0.0", "0.307", "0.595"), "SFRONT"),
+        (deck("0.307", "0.307", "0.0"), "HB"),
+    ] {
+        assert!(
+            has(&d, Severity::Error, &format!("{variable} must be positive")),
+            "{:?}",
+            d.diagnostics
+        );
+        let texts = warning_texts(&datcom::run(&d));
+        assert!(
+            texts
+                .iter()
+                .all(|t| !t.contains("= inf") && !t.contains("= NaN")),
+            "{texts:?}"
+        );
+        assert!(
+            texts
+                .iter()
+                .any(|t| t.contains(&format!("{variable} = 0 is not positive"))),
+            "{texts:?}"
+        );
+    }
+    let no_base = deck("0.307", "0.0", "0.595");
+    assert!(
+        !no_base
+            .diagnostics
+            .iter()
+            .any(|x| x.severity == Severity::Error),
+        "{:?}",
+        no_base.diagnostics
+    );
+    let r = datcom::run(&no_base);
+    let json = datcom::report::json::to_string(&r);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let cn = &v["cases"][0]["conditions"][0]["static"]["CN"];
+    assert!(
+        cn.as_array()
+            .is_some_and(|a| a.iter().all(|x| x.is_number())),
+        "{cn}"
+    );
+    no_non_finite(&no_base);
+}

@@ -1551,6 +1551,10 @@ impl Case {
             c.range(name, "TOVC", CHORD_FRACTION, self.dim);
             c.range(name, "XOVC", CHORD_FRACTION, self.dim);
             c.non_negative(name, "DELTAY");
+            // A maximum lift at or below zero puts the stall at or below the zero-lift angle,
+            // where the non-linear lift curve divides by zero.
+            c.positive(name, "CLMAX");
+            c.positive(name, "CLMAXL");
         }
         self.check_sections(c);
         c.positive("OPTINS", "SREF");
@@ -1666,9 +1670,12 @@ impl Case {
         if self.larwb.is_some() {
             c.positive("LARWB", "SREF");
             c.positive("LARWB", "L");
-            for var in [
-                "SFRONT", "SWET", "PERBAS", "SBASE", "HB", "BB", "SBS", "SBSLB",
-            ] {
+            // The method divides by the frontal area (the suction's geometry) and by the base
+            // height and width (the base's shape).
+            for var in ["SFRONT", "HB", "BB"] {
+                c.positive("LARWB", var);
+            }
+            for var in ["SWET", "PERBAS", "SBASE", "SBS", "SBSLB"] {
                 c.non_negative("LARWB", var);
             }
         }

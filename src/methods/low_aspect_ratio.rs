@@ -367,11 +367,11 @@ pub fn low_aspect_ratio_wing_body(
     let length = positive(lb.length, "L")?;
     let xcg = lb.xcg.unwrap_or(0.0);
     let aspect_ratio = positive(lb.aspect_ratio, "AR")?;
-    let sfront = need(lb.sfront, "SFRONT")?;
+    let sfront = positive(lb.sfront, "SFRONT")?;
     let swet = need(lb.swet, "SWET")?;
     let perbas = need(lb.perbas, "PERBAS")?;
     let sbase = need(lb.sbase, "SBASE")?;
-    let hb = need(lb.hb, "HB")?;
+    let hb = positive(lb.hb, "HB")?;
     let bb = positive(lb.bb, "BB")?;
     let theta_deg = need(lb.thetad_deg, "THETAD")?;
     let zb = lb.zb.unwrap_or(0.0);
@@ -422,11 +422,17 @@ pub fn low_aspect_ratio_wing_body(
     let suction = suction_factor
         * ALPHA_20_RAD
         * ((aspect_ratio + ASPECT_TWO) / (aspect_ratio + ASPECT_FOUR));
-    let base_width_shape = bb * bb / (hb * sbase.sqrt());
-    let base_factor_20 = if lb.blf.unwrap_or(false) {
-        r.read(figures::BASE_FACTOR_BODY, &[base_width_shape])?
+    // Without a base (SBASE = 0) there is no base drag to grow with the angle (and the base's
+    // shape, which divides by √SBASE, is not defined): the factor is 1.
+    let base_factor_20 = if sbase == 0.0 {
+        1.0
     } else {
-        r.read(figures::BASE_FACTOR_LIFTING, &[base_width_shape])?
+        let base_width_shape = bb * bb / (hb * sbase.sqrt());
+        if lb.blf.unwrap_or(false) {
+            r.read(figures::BASE_FACTOR_BODY, &[base_width_shape])?
+        } else {
+            r.read(figures::BASE_FACTOR_LIFTING, &[base_width_shape])?
+        }
     };
     let base_growth = base_axial * (base_factor_20 - 1.0);
     let ca_prime: Vec<f64> = alpha_prime

@@ -139,14 +139,16 @@ fn chord_at_tail_height(
     let tip = plan.chrdtp.unwrap_or(0.0);
     let semispan = g.semispan;
     let tan_le_in = g.tan_sweep_inboard(0.0);
-    let straight_type = plan.planform_type.is_none_or(|t| t == 1.0);
+    let outboard_span = plan.sspnop.filter(|s| *s > 0.0).unwrap_or(0.0);
+    // Without an outboard panel the panel is straight whatever TYPE says, as the planform's
+    // geometry takes it (a TYPE other than 1 without SSPNOP divided by its zero span).
+    let straight_type = plan.planform_type.is_none_or(|t| t == 1.0) || outboard_span == 0.0;
     if straight_type {
         return (
             tail_quarter_chord_behind_panel_apex - zh * tan_le_in,
             root - (root - tip) * zh / semispan,
         );
     }
-    let outboard_span = plan.sspnop.unwrap_or(0.0);
     let break_chord = plan.chrdbp.unwrap_or(root);
     let inboard_span = semispan - outboard_span;
     if zh <= inboard_span {

@@ -345,6 +345,17 @@ pub fn straight_lift_curve(
     let (Some(clmax), Some(alpha_max)) = (i.max_lift.clmax, i.max_lift.alpha_deg) else {
         return Ok(None);
     };
+    // The curve rises from zero lift to a stall above it: with CLmax at or below zero (a
+    // nonsensical deck value, or a section whose computed maximum lift is not positive) the
+    // stall falls at or below the zero-lift angle, where the curve's readings divide by zero.
+    if !(clmax > 0.0 && alpha_max > i.zero_lift_alpha_deg) {
+        return Err(WingMethodError::Degenerate {
+            reason: format!(
+                "the maximum lift CLmax = {clmax:.4} at {alpha_max:.4} deg is not above zero lift (at {:.4} deg)",
+                i.zero_lift_alpha_deg
+            ),
+        });
+    }
     let c1 = i.class.c1;
     let cube = (i.class.c2_aspect_tan_le / 7.0).powi(3);
     let j = 0.3
