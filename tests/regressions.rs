@@ -1529,6 +1529,24 @@ fn warning_texts(r: &datcom::Results) -> Vec<String> {
         .collect()
 }
 
+/// The deck's checks give `error`, and its run says `reason` and reads no chart at a value
+/// that is not finite.
+fn refused_with_reason(deck: &datcom::Deck, error: &str, reason: &str) {
+    assert!(
+        has(deck, Severity::Error, error),
+        "{error}: {:?}",
+        deck.diagnostics
+    );
+    let texts = warning_texts(&datcom::run(deck));
+    assert!(
+        texts
+            .iter()
+            .all(|t| !t.contains("= inf") && !t.contains("= NaN")),
+        "{texts:?}"
+    );
+    assert!(texts.iter().any(|t| t.contains(reason)), "{texts:?}");
+}
+
 /// Fuzzing found `$WGSCHR CLMAX=0.0` passing the checks and every coefficient of the case
 /// lost to a chart read at `tan_ratio = inf`: a stall at or below the zero-lift angle makes
 /// the non-linear lift curve divide by zero. The deck's CLMAX must be positive, and a wing
@@ -1542,22 +1560,7 @@ fn maximum_lift_at_or_below_zero_is_refused_not_read_at_infinity() {
              $WGPLNF CHRDR=4.0,CHRDTP=2.0,SSPN=10.0,SSPNE=10.0,SAVSI=0.0,CHSTAT=0.25$\n \
              $WGSCHR CLMAX={clmax}$\nNACA W 4 0012\n"
         ));
-        assert!(
-            has(&deck, Severity::Error, "CLMAX(1) must be positive"),
-            "CLMAX={clmax}: {:?}",
-            deck.diagnostics
-        );
-        let texts = warning_texts(&datcom::run(&deck));
-        assert!(
-            texts
-                .iter()
-                .all(|t| !t.contains("= inf") && !t.contains("= NaN")),
-            "{texts:?}"
-        );
-        assert!(
-            texts.iter().any(|t| t.contains("is not above zero lift")),
-            "{texts:?}"
-        );
+        refused_with_reason(&deck, "CLMAX(1) must be positive", "is not above zero lift");
         no_non_finite(&deck);
     }
 }
@@ -1617,7 +1620,7 @@ fn fin_without_an_outboard_panel_is_straight_whatever_its_type() {
 fn lifting_body_without_frontal_area_or_base_height_is_refused() {
     let deck = |sfront: &str, sbase: &str, hb: &str| {
         read(&format!(
-            " $FLTCON NMACH=1.0,MACH(1)=0.26,NALT=1.0,ALT(1)=0.0,NALPHA=2.0,ALSCHD(1)=0.0,4.0$\n \
+            " $FLTCON NMACH=1.0,MACH(1)=0.26,NALT=1.0,ALT(1)=0.0,\n  NALPHA=2.0,ALSCHD(1)=0.0,4.0$\n \
              $LARWB ZB=0.0,SREF=0.989,DELTEP=90.0,SFRONT={sfront},AR=1.076,L=1.915,SWET=2.28,\n  \
              PERBAS=2.38,SBASE={sbase},HB={hb},BB=1.03,BLF=.FALSE.,XCG=1.44,THETAD=15.0,\n  \
              ROUNDN=.FALSE.,SBS=0.54,SBSLB=0.0,XCENSB=1.0,XCENW=1.1$\n"
@@ -1627,23 +1630,10 @@ fn lifting_body_without_frontal_area_or_base_height_is_refused() {
         (deck("0.0", "0.307", "0.595"), "SFRONT"),
         (deck("0.307", "0.307", "0.0"), "HB"),
     ] {
-        assert!(
-            has(&d, Severity::Error, &format!("{variable} must be positive")),
-            "{:?}",
-            d.diagnostics
-        );
-        let texts = warning_texts(&datcom::run(&d));
-        assert!(
-            texts
-                .iter()
-                .all(|t| !t.contains("= inf") && !t.contains("= NaN")),
-            "{texts:?}"
-        );
-        assert!(
-            texts
-                .iter()
-                .any(|t| t.contains(&format!("{variable} = 0 is not positive"))),
-            "{texts:?}"
+        refused_with_reason(
+            &d,
+            &format!("{variable} must be positive"),
+            &format!("{variable} = 0 is not positive"),
         );
     }
     let no_base = deck("0.307", "0.0", "0.595");
