@@ -418,6 +418,13 @@ fn angles_of_attack_beyond_a_right_angle() {
         Severity::Warning,
         "ALSCHD(2) = -90 deg"
     ));
+    // Fuzzing found CM of 1e33 at -90 deg and CMA of 5e31 at 0 deg, its neighbour in the
+    // schedule: the warning names the slopes too.
+    assert!(said(
+        &deck("-90.0", true),
+        Severity::Warning,
+        "nor the slopes CLA and CMA at the angles next to it"
+    ));
     let body_alone = deck("135.0", false);
     assert!(!said(&body_alone, Severity::Warning, "ALSCHD"));
     assert!(errors(&body_alone).is_empty(), "{:?}", errors(&body_alone));

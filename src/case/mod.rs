@@ -958,7 +958,7 @@ impl<'a> Checks<'a> {
                 Severity::Warning,
                 card,
                 Some(var),
-                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at {RIGHT_ANGLE_DEG} deg and beyond (only the body's do)"),
+                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at {RIGHT_ANGLE_DEG} deg and beyond (only the body's do), nor the slopes CLA and CMA at the angles next to it"),
                 None,
             );
         }
