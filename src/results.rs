@@ -1202,6 +1202,21 @@ fn reference(case: &Case) -> ReferenceDimensions {
 /// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
 /// gives, with a warning.
 pub fn run_case(case: &Case) -> CaseResults {
+    if !(case.scale.is_finite() && case.scale > 0.0) {
+        // The case's geometry is already scaled; SCALE only turns the reference dimensions
+        // back into the deck's (a deck's SCALE of zero or less reads as 1 the same way).
+        let mut fixed = case.clone();
+        fixed.scale = 1.0;
+        let mut results = run_case(&fixed);
+        results.warnings.insert(
+            0,
+            Warning::text(format!(
+                "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
+                case.scale
+            )),
+        );
+        return results;
+    }
     if build_up_implied(case) {
         // The original's pages for such a case: the whole build-up and the partial output.
         let mut built = case.clone();

@@ -339,3 +339,72 @@ fn edits_are_what_the_deck_is_written_with() {
         .collect::<Vec<_>>();
     assert!(long.is_empty(), "numbers written long: {long:?}");
 }
+
+/// Fuzzing the library found a case's `scale` of 0, NaN or infinity taken as given: the
+/// coefficients were computed, and the reference dimensions (turned back into the deck's by
+/// the scale) came out as NaN or infinity, null in the JSON, with no warning. Such a scale is
+/// taken as 1, with a warning naming it.
+#[test]
+fn a_scale_that_is_not_a_positive_number_is_taken_as_one() {
+    let mut plain = build_case::example_uav();
+    plain.prepare();
+    let expected = datcom::results::run_case(&plain);
+    let reference = datcom::report::json::to_string(&datcom::Results {
+        cases: vec![expected.clone()],
+        file: String::new(),
+    });
+    for scale in [0.0, -0.0, -2.0, f64::NAN, f64::INFINITY] {
+        let mut case = plain.clone();
+        case.scale = scale;
+        let r = datcom::results::run_case(&case);
+        assert!(
+            r.warnings.iter().any(|w| w
+                .to_string()
+                .contains("is not a positive number: taken as 1")),
+            "scale {scale}: {:?}",
+            r.warnings
+        );
+        assert_eq!(r.scale, 1.0);
+        assert_eq!(r.conditions, expected.conditions, "scale {scale}");
+        let mut without = r.clone();
+        without.warnings.remove(0);
+        let json = datcom::report::json::to_string(&datcom::Results {
+            cases: vec![without],
+            file: String::new(),
+        });
+        assert_eq!(json, reference, "scale {scale}");
+    }
+}
+
+/// A derivative per radian beyond f64::MAX/π overflowed to infinity when given per degree
+/// (the product with π came first); found by fuzzing the library with a span of 1e-310.
+#[test]
+fn a_finite_derivative_stays_finite_per_degree() {
+    use datcom::deck::cards::DerivUnit;
+    let huge = 1e308;
+    let per_degree = datcom::report::derivative_view(Some(huge), DerivUnit::Deg).unwrap();
+    assert!(per_degree.is_finite(), "{per_degree}");
+    assert!((per_degree / (huge * (std::f64::consts::PI / 180.0)) - 1.0).abs() < 1e-15);
+    // Ordinary values keep the digits they have always had.
+    let v = 0.0871_f64;
+    assert_eq!(
+        datcom::report::derivative_view(Some(v), DerivUnit::Deg),
+        Some(v * std::f64::consts::PI / 180.0)
+    );
+}
+
+/// Fuzzing the library found a schedule of one angle giving the configuration's first-row
+/// moment terms as NaN (a drag slope from one point) through `methods::tail::configuration`:
+/// there is no such term then, and the terms that are given are numbers.
+#[test]
+fn one_angle_gives_no_moment_terms_that_are_not_numbers() {
+    let mut case = build_case::example_uav();
+    case.flight.as_mut().unwrap().alpha_deg = vec![0.0];
+    case.prepare();
+    let totals = datcom::methods::tail::configuration(&case, 0, &[0.0]).expect("computed");
+    let first = totals.terms.first_slopes.expect("first-row slopes");
+    assert!(first.cla_per_rad.is_finite(), "{first:?}");
+    for term in [first.wing_body_moment, first.tail_moment, first.cma_per_rad] {
+        assert!(term.is_none_or(f64::is_finite), "{first:?}");
+    }
+}

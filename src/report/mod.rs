@@ -65,6 +65,16 @@ pub fn reference_view(c: &CaseResults) -> (Option<f64>, Option<f64>, Option<f64>
 pub fn derivative_view(per_rad: Option<f64>, unit: DerivUnit) -> Option<f64> {
     per_rad.map(|v| match unit {
         DerivUnit::Rad => v,
-        DerivUnit::Deg => v * std::f64::consts::PI / 180.0,
+        DerivUnit::Deg => {
+            // π/180 as the product then the quotient (the printed digits have always been
+            // those); a value beyond f64::MAX/π, which the product would overflow, by the
+            // factor (found by fuzzing the library: a finite derivative printed as inf).
+            let product = v * std::f64::consts::PI;
+            if product.is_finite() {
+                product / 180.0
+            } else {
+                v * (std::f64::consts::PI / 180.0)
+            }
+        }
     })
 }

@@ -722,7 +722,9 @@ fn wing_body_horizontal_tail(
             let e = a.dynamic_pressure_ratio * (1.0 - a.gradient);
             let tail_moment = lever * ((-clht + dcdda) * sa + (dclda + cdht) * ca) * e
                 - height * ((dclda + cdht) * sa + (clht - dcdda) * ca) * e;
-            Some((wing_body_moment, tail_moment))
+            // One angle gives no slope of the drag (NaN): no moment terms then, rather than
+            // terms that are not numbers (found by fuzzing the library).
+            Some((wing_body_moment, tail_moment)).filter(|(w, t)| w.is_finite() && t.is_finite())
         })();
         Some(FirstSlopes {
             cla_per_rad: cla1,
