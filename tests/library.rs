@@ -408,3 +408,36 @@ fn one_angle_gives_no_moment_terms_that_are_not_numbers() {
         assert!(term.is_none_or(f64::is_finite), "{first:?}");
     }
 }
+
+/// Fuzzing the library found a NaN in a case's experimental data ($EXPR01 CDWB) put into the
+/// wing-body's drag column, and a NaN section lift-curve slope (CLALPA) kept as the section's
+/// slope: a value that is not a number is not given, and the case computes as without it.
+#[test]
+fn user_data_that_is_not_a_number_is_not_given() {
+    let run = |edit: &dyn Fn(&mut datcom::Case)| {
+        let mut case = build_case::example_uav();
+        edit(&mut case);
+        case.prepare();
+        datcom::results::run_case(&case)
+    };
+    let plain = run(&|_| {});
+    let experimental = run(&|c: &mut datcom::Case| {
+        c.other.entry("EXPR01".into()).or_default().insert(
+            "CDWB".into(),
+            datcom::deck::Value::Numbers(vec![None, Some(f64::NAN)]),
+        );
+    });
+    assert_eq!(experimental.conditions, plain.conditions);
+    // The example's wing has a NACA card and no section input: an empty one, and the same
+    // with the values that are not numbers.
+    let empty = run(&|c: &mut datcom::Case| {
+        c.sections.entry("WING".into()).or_default();
+    });
+    let slope = run(&|c: &mut datcom::Case| {
+        let wing = c.sections.entry("WING".into()).or_default();
+        wing.per_mach.insert("CLALPA".into(), vec![f64::NAN]);
+        wing.scalars.insert("LERI".into(), f64::NAN);
+    });
+    assert_eq!(slope.conditions, empty.conditions);
+    assert_eq!(slope.sections, empty.sections);
+}

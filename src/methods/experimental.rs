@@ -31,12 +31,13 @@ pub fn namelist(case: &Case, mach_index: usize) -> Option<(String, &NamelistValu
     Some((name, values))
 }
 
-/// The values of array `variable` by angle index; empty when not given.
+/// The values of array `variable` by angle index; empty when not given. A value that is not
+/// a number (a case built in code can hold one) is not given.
 pub fn column(values: &NamelistValues, variable: &str) -> Vec<Option<f64>> {
     values
         .get(variable)
         .and_then(|v| v.numbers())
-        .map(<[Option<f64>]>::to_vec)
+        .map(|v| v.iter().map(|x| x.filter(|x| x.is_finite())).collect())
         .unwrap_or_default()
 }
 

@@ -178,13 +178,18 @@ pub fn surface_section(
             .cloned()
             .unwrap_or_default();
         let overrides = SectionOverrides {
-            leading_edge_radius: input.and_then(|i| i.scalars.get("LERI")).copied(),
+            // A value that is not a number is not given (a case built in code can hold one).
+            leading_edge_radius: input
+                .and_then(|i| i.scalars.get("LERI"))
+                .copied()
+                .filter(|r| r.is_finite()),
             lift_curve_slope_per_rad: case
                 .conditions
                 .iter()
                 .map(|c| {
                     user_slopes_per_deg
                         .get(c.mach_index)
+                        .filter(|s| s.is_finite())
                         .map(|s| s.to_degrees())
                 })
                 .collect(),
