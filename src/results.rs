@@ -1204,7 +1204,8 @@ fn reference(case: &Case) -> ReferenceDimensions {
 pub fn run_case(case: &Case) -> CaseResults {
     if !(case.scale.is_finite() && case.scale > 0.0) {
         // The case's geometry is already scaled; SCALE only turns the reference dimensions
-        // back into the deck's (a deck's SCALE of zero or less reads as 1 the same way).
+        // back into the deck's. (A deck's SCALE of zero or less is read as 1 when the case is
+        // typed, so only a case edited in code gets here.)
         let mut fixed = case.clone();
         fixed.scale = 1.0;
         let mut results = run_case(&fixed);

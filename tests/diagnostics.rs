@@ -423,7 +423,7 @@ fn angles_of_attack_beyond_a_right_angle() {
     assert!(said(
         &deck("-90.0", true),
         Severity::Warning,
-        "nor the slopes CLA and CMA at the angles next to it"
+        "nor the slopes CLA and CMA at the angles next to this one"
     ));
     let body_alone = deck("135.0", false);
     assert!(!said(&body_alone, Severity::Warning, "ALSCHD"));

@@ -1560,9 +1560,26 @@ fn maximum_lift_at_or_below_zero_is_refused_not_read_at_infinity() {
              $WGPLNF CHRDR=4.0,CHRDTP=2.0,SSPN=10.0,SSPNE=10.0,SAVSI=0.0,CHSTAT=0.25$\n \
              $WGSCHR CLMAX={clmax}$\nNACA W 4 0012\n"
         ));
-        refused_with_reason(&deck, "CLMAX(1) must be positive", "is not above zero lift");
+        refused_with_reason(
+            &deck,
+            "CLMAX(1) must be positive",
+            "is not positive: no CL, CD, CM beyond the lift-curve slope",
+        );
         no_non_finite(&deck);
     }
+    // A CLMAX per Mach number is read for the case's Mach numbers only: a value beyond them
+    // is not checked.
+    let beyond = read(
+        " $FLTCON NMACH=1.0,MACH(1)=0.3,NALPHA=2.0,ALSCHD(1)=0.0,4.0,RNNUB(1)=1.0E6$\n \
+         $SYNTHS XCG=3.0,XW=2.0$\n \
+         $WGPLNF CHRDR=4.0,CHRDTP=2.0,SSPN=10.0,SSPNE=10.0,SAVSI=0.0,CHSTAT=0.25$\n \
+         $WGSCHR CLMAX=1.2,0.0$\nNACA W 4 0012\n",
+    );
+    assert!(
+        !has(&beyond, Severity::Error, "CLMAX"),
+        "{:?}",
+        beyond.diagnostics
+    );
 }
 
 /// Fuzzing found a vertical tail with TYPE other than 1 and no outboard panel (TYPE=0.5, or
@@ -1610,6 +1627,21 @@ fn fin_without_an_outboard_panel_is_straight_whatever_its_type() {
             "TYPE={fin_type}"
         );
     }
+    // A tapered, swept fin with the horizontal tail inside its span and a break chord that
+    // no outboard panel uses: the straight fin's numbers (the break chord used to be taken).
+    let tapered = |fin_type: &str| {
+        results(&read(&format!(
+            "BUILD\n $FLTCON MACH(1)=0.3,NALPHA=2.0,ALSCHD(1)=0.0,4.0$\n $SYNTHS ZH=0.08$\n \
+             $BODY X(1)=0.0,0.10433,R(1)=0.05,0.05$\n $WGPLNF CHRDR=0.28,SSPN=1.0625$\n \
+             $HTPLNF CHRDR=0.22,SSPN=0.17$\n \
+             $VTPLNF CHRDR=0.2,CHRDTP=0.08,CHRDBP=0.15,SSPN=0.16,SAVSI=30.0,TYPE={fin_type}$\n\
+             NACA W 4 0012\nNACA H 4 0012\n"
+        )))
+    };
+    assert_eq!(
+        datcom::report::json::to_string(&tapered("2.0")),
+        datcom::report::json::to_string(&tapered("1.0"))
+    );
 }
 
 /// Fuzzing found a $LARWB body with SFRONT=0 or HB=0 passing the checks and its page lost to
@@ -1636,7 +1668,8 @@ fn lifting_body_without_frontal_area_or_base_height_is_refused() {
             &format!("{variable} = 0 is not positive"),
         );
     }
-    let no_base = deck("0.307", "0.0", "0.595");
+    // Without a base the height does not divide anything: HB = 0 is accepted then.
+    let no_base = deck("0.307", "0.0", "0.0");
     assert!(
         !no_base
             .diagnostics
@@ -1648,11 +1681,15 @@ fn lifting_body_without_frontal_area_or_base_height_is_refused() {
     let r = datcom::run(&no_base);
     let json = datcom::report::json::to_string(&r);
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();
-    let cn = &v["cases"][0]["conditions"][0]["static"]["CN"];
-    assert!(
-        cn.as_array()
-            .is_some_and(|a| a.iter().all(|x| x.is_number())),
-        "{cn}"
-    );
+    // The base-growth factor is in the axial force.
+    for column in ["CN", "CA", "CD"] {
+        let values = &v["cases"][0]["conditions"][0]["static"][column];
+        assert!(
+            values
+                .as_array()
+                .is_some_and(|a| a.iter().all(|x| x.is_number())),
+            "{column}: {values}"
+        );
+    }
     no_non_finite(&no_base);
 }

@@ -889,8 +889,15 @@ impl<'a> Checks<'a> {
     }
 
     fn sign(&mut self, card: &str, var: &str, allow_zero: bool) {
+        self.sign_of_first(card, var, allow_zero, usize::MAX);
+    }
+
+    /// [`Checks::sign`] of the first `count` elements only (an array per Mach number, whose
+    /// values beyond the case's Mach numbers are not read).
+    fn sign_of_first(&mut self, card: &str, var: &str, allow_zero: bool, count: usize) {
         let bad = self
             .values(card, var)
+            .take_while(|&(i, _)| i <= count)
             .find(|(_, x)| if allow_zero { *x < 0.0 } else { *x <= 0.0 });
         if let Some((i, found)) = bad {
             let problem = DeckProblem::NotPositive {
@@ -958,7 +965,7 @@ impl<'a> Checks<'a> {
                 Severity::Warning,
                 card,
                 Some(var),
-                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at {RIGHT_ANGLE_DEG} deg and beyond (only the body's do), nor the slopes CLA and CMA at the angles next to it"),
+                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at {RIGHT_ANGLE_DEG} deg and beyond (only the body's do), nor the slopes CLA and CMA at the angles next to this one in the schedule"),
                 None,
             );
         }
@@ -1546,14 +1553,17 @@ impl Case {
         );
         c.acute("SYNTHS", "ALIW", "the wing's incidence");
         c.acute("SYNTHS", "ALIH", "the horizontal tail's incidence");
+        // At least one Mach number's values are read.
+        let mach_count = self.flight.as_ref().map_or(1, |f| f.mach.len().max(1));
         for (name, _) in SECTION_NAMELISTS {
             // Fractions of the chord: the thickness ratio and its station.
             c.range(name, "TOVC", CHORD_FRACTION, self.dim);
             c.range(name, "XOVC", CHORD_FRACTION, self.dim);
             c.non_negative(name, "DELTAY");
             // A maximum lift at or below zero puts the stall at or below the zero-lift angle,
-            // where the non-linear lift curve divides by zero.
-            c.positive(name, "CLMAX");
+            // where the non-linear lift curve divides by zero. CLMAX is given per Mach number:
+            // only the case's Mach numbers' values are read.
+            c.sign_of_first(name, "CLMAX", false, mach_count);
             c.positive(name, "CLMAXL");
         }
         self.check_sections(c);
@@ -1670,12 +1680,20 @@ impl Case {
         if self.larwb.is_some() {
             c.positive("LARWB", "SREF");
             c.positive("LARWB", "L");
-            // The method divides by the frontal area (the suction's geometry) and by the base
-            // height and width (the base's shape).
-            for var in ["SFRONT", "HB", "BB"] {
+            // The method divides by the frontal area (the suction's geometry), by the base's
+            // width, and by its height only when there is a base (the base's shape).
+            for var in ["SFRONT", "BB"] {
                 c.positive("LARWB", var);
             }
-            for var in ["SWET", "PERBAS", "SBASE", "SBS", "SBSLB"] {
+            let has_base = self
+                .larwb
+                .as_ref()
+                .and_then(|l| l.sbase)
+                .is_some_and(|s| s > 0.0);
+            if has_base {
+                c.positive("LARWB", "HB");
+            }
+            for var in ["SWET", "PERBAS", "SBASE", "HB", "SBS", "SBSLB"] {
                 c.non_negative("LARWB", var);
             }
         }

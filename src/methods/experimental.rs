@@ -37,7 +37,7 @@ pub fn column(values: &NamelistValues, variable: &str) -> Vec<Option<f64>> {
     values
         .get(variable)
         .and_then(|v| v.numbers())
-        .map(|v| v.iter().map(|x| x.filter(|x| x.is_finite())).collect())
+        .map(|v| crate::numeric::finite_only(v.to_vec()))
         .unwrap_or_default()
 }
 

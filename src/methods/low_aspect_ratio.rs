@@ -371,7 +371,13 @@ pub fn low_aspect_ratio_wing_body(
     let swet = need(lb.swet, "SWET")?;
     let perbas = need(lb.perbas, "PERBAS")?;
     let sbase = need(lb.sbase, "SBASE")?;
-    let hb = positive(lb.hb, "HB")?;
+    let sbase_given = need(lb.sbase, "SBASE")?;
+    // The base's height divides its shape only when there is a base.
+    let hb = if sbase_given > 0.0 {
+        positive(lb.hb, "HB")?
+    } else {
+        need(lb.hb, "HB")?
+    };
     let bb = positive(lb.bb, "BB")?;
     let theta_deg = need(lb.thetad_deg, "THETAD")?;
     let zb = lb.zb.unwrap_or(0.0);
@@ -398,8 +404,12 @@ pub fn low_aspect_ratio_wing_body(
     // 4.8.2.2, axial force.
     let base_shape = 2.0 * sbase / (std::f64::consts::PI * length * (hb + bb));
     let base_pressure = r.read(figures::BASE_PRESSURE, &[base_shape])?;
-    let base_axial =
-        base_pressure * perbas * sbase / (2.0 * (std::f64::consts::PI * sbase).sqrt() * sref);
+    // Without a base there is no base drag (the expression's S_b/√S_b is 0/0 there).
+    let base_axial = if sbase == 0.0 {
+        0.0
+    } else {
+        base_pressure * perbas * sbase / (2.0 * (std::f64::consts::PI * sbase).sqrt() * sref)
+    };
     let reynolds_length = flight.reynolds_per_length * length;
     let log_cutoff = r.read(
         figures::CUTOFF_REYNOLDS,

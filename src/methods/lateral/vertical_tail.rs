@@ -140,9 +140,13 @@ fn chord_at_tail_height(
     let semispan = g.semispan;
     let tan_le_in = g.tan_sweep_inboard(0.0);
     let outboard_span = plan.sspnop.filter(|s| *s > 0.0).unwrap_or(0.0);
-    // Without an outboard panel the panel is straight whatever TYPE says, as the planform's
-    // geometry takes it (a TYPE other than 1 without SSPNOP divided by its zero span).
-    let straight_type = plan.planform_type.is_none_or(|t| t == 1.0) || outboard_span == 0.0;
+    // TYPE read as the wing methods read it (rounded; 5 and above straight). Without an
+    // outboard panel the panel is straight whatever TYPE says, as the planform's geometry
+    // takes it: a TYPE other than 1 without SSPNOP divided by the outboard panel's zero span
+    // above the tip, and took CHRDBP as a break chord below it.
+    let straight_type = crate::methods::wing::WingType::from_input(plan.planform_type)
+        == Some(crate::methods::wing::WingType::Straight)
+        || outboard_span == 0.0;
     if straight_type {
         return (
             tail_quarter_chord_behind_panel_apex - zh * tan_le_in,

@@ -722,14 +722,14 @@ fn wing_body_horizontal_tail(
             let e = a.dynamic_pressure_ratio * (1.0 - a.gradient);
             let tail_moment = lever * ((-clht + dcdda) * sa + (dclda + cdht) * ca) * e
                 - height * ((dclda + cdht) * sa + (clht - dcdda) * ca) * e;
-            // One angle gives no slope of the drag (NaN): no moment terms then, rather than
-            // terms that are not numbers (found by fuzzing the library).
-            Some((wing_body_moment, tail_moment)).filter(|(w, t)| w.is_finite() && t.is_finite())
+            Some((wing_body_moment, tail_moment))
         })();
+        // One angle gives no slope of the drag (NaN): no such term then, rather than one that
+        // is not a number (found by fuzzing the library).
         Some(FirstSlopes {
             cla_per_rad: cla1,
-            wing_body_moment: moment.map(|m| m.0),
-            tail_moment: moment.map(|m| m.1),
+            wing_body_moment: moment.map(|m| m.0).filter(|v| v.is_finite()),
+            tail_moment: moment.map(|m| m.1).filter(|v| v.is_finite()),
             cma_per_rad: moment.map(|m| m.0 + m.1).filter(|v| v.is_finite()),
         })
     })();

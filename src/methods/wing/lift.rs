@@ -348,13 +348,22 @@ pub fn straight_lift_curve(
     // The curve rises from zero lift to a stall above it: with CLmax at or below zero (a
     // nonsensical deck value, or a section whose computed maximum lift is not positive) the
     // stall falls at or below the zero-lift angle, where the curve's readings divide by zero.
-    if !(clmax > 0.0 && alpha_max > i.zero_lift_alpha_deg) {
-        return Err(WingMethodError::Degenerate {
-            reason: format!(
-                "the maximum lift CLmax = {clmax:.4} at {alpha_max:.4} deg is not above zero lift (at {:.4} deg)",
-                i.zero_lift_alpha_deg
-            ),
-        });
+    // The linear results stand, as without a CLmax.
+    let reason = if clmax <= 0.0 {
+        Some(format!(
+            "the wing's maximum lift CLmax = {clmax:.4} is not positive"
+        ))
+    } else if alpha_max <= i.zero_lift_alpha_deg {
+        Some(format!(
+            "the angle of maximum lift, {alpha_max:.4} deg, is not above the zero-lift angle, {:.4} deg",
+            i.zero_lift_alpha_deg
+        ))
+    } else {
+        None
+    };
+    if let Some(reason) = reason {
+        warnings.push(WingWarning::NoStallAboveZeroLift { reason });
+        return Ok(None);
     }
     let c1 = i.class.c1;
     let cube = (i.class.c2_aspect_tan_le / 7.0).powi(3);

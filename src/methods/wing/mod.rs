@@ -182,6 +182,9 @@ pub enum WingWarning {
     SectionValueMissing { name: &'static str },
     /// A high-aspect-ratio wing without section CLMAX: no CLmax, and so no nonlinear lift.
     NoSectionMaxLift,
+    /// The maximum lift is not positive, or its angle not above the zero-lift angle: the
+    /// nonlinear lift curve would divide by zero; only the lift-curve slope is given.
+    NoStallAboveZeroLift { reason: String },
     /// A cambered section without thickness ratio: no Mach correction of α0.
     NoCamberMachCorrection,
     /// The dashed curves of figure 4.1.3.3-56 would apply; the solid ones were used.
@@ -210,6 +213,10 @@ impl fmt::Display for WingWarning {
             WingWarning::NoSectionMaxLift => write!(
                 f,
                 "no section CLMAX for this Mach number: no wing CLmax, and no CL, CD, CM beyond the lift-curve slope"
+            ),
+            WingWarning::NoStallAboveZeroLift { reason } => write!(
+                f,
+                "{reason}: no CL, CD, CM beyond the lift-curve slope"
             ),
             WingWarning::NearAspectRatioBoundary {
                 aspect_ratio,
