@@ -8,6 +8,14 @@ mod common;
 #[path = "../examples/build_case.rs"]
 mod build_case;
 
+/// The example's case with `edit` applied, prepared and run.
+fn run(edit: &dyn Fn(&mut datcom::Case)) -> datcom::results::CaseResults {
+    let mut case = build_case::example_uav();
+    edit(&mut case);
+    case.prepare();
+    datcom::results::run_case(&case)
+}
+
 #[test]
 fn a_case_built_in_code_computes_as_its_deck() {
     let mut built = build_case::example_uav();
@@ -103,12 +111,6 @@ fn what_a_case_built_in_code_does_not_need() {
 /// and a reference dimension that is not a number is none in the results.
 #[test]
 fn values_a_deck_would_refuse_are_refused_in_code() {
-    let run = |edit: &dyn Fn(&mut datcom::Case)| {
-        let mut case = build_case::example_uav();
-        edit(&mut case);
-        case.prepare();
-        datcom::results::run_case(&case)
-    };
     for (what, edit) in [
         (
             "SAVSI",
@@ -415,12 +417,6 @@ fn one_angle_gives_no_moment_terms_that_are_not_numbers() {
 /// slope: a value that is not a number is not given, and the case computes as without it.
 #[test]
 fn user_data_that_is_not_a_number_is_not_given() {
-    let run = |edit: &dyn Fn(&mut datcom::Case)| {
-        let mut case = build_case::example_uav();
-        edit(&mut case);
-        case.prepare();
-        datcom::results::run_case(&case)
-    };
     let plain = run(&|_| {});
     let experimental = run(&|c: &mut datcom::Case| {
         c.other.entry("EXPR01".into()).or_default().insert(
