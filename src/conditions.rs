@@ -32,6 +32,9 @@ const SOUND_FT_PER_S_PER_SQRT_RANKINE: f64 = 49.01685;
 const REYNOLDS_K_PER_FT: f64 = 1.2527e6;
 /// Sutherland's constant for air, °R.
 const SUTHERLAND_RANKINE: f64 = 198.6;
+/// The fastest flight speed taken, m/s: Mach 100 (the Mach numbers' limit) in the hottest
+/// air of the standard atmosphere is about 70 km/s; a velocity beyond this is not a flight's.
+const VELOCITY_LIMIT: f64 = 1.0e5;
 
 /// Speed of sound, m/s, at static temperature `t` K.
 pub fn speed_of_sound(t: f64) -> f64 {
@@ -176,9 +179,14 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
             .iter()
             .flatten()
             .all(|x| x.is_finite());
-        if !(finite && physical(pressure) && physical(temperature) && mach >= 0.0) {
+        // An altitude only reported (pressure and temperature given) or a velocity only
+        // reported (with a Mach number) is still a flight's: a case edited in code can give
+        // any number there (found by fuzzing the library: 1.8e308 printed as inf in feet).
+        let reported = altitude.is_none_or(|z| atmosphere::standard(z).in_range)
+            && velocity.is_none_or(|v| (0.0..=VELOCITY_LIMIT).contains(&v));
+        if !(finite && reported && physical(pressure) && physical(temperature) && mach >= 0.0) {
             warnings.push(format!(
-                "condition {} not computed: Mach {mach}, pressure {pressure:?} Pa, temperature {temperature:?} K give no physical flight condition",
+                "condition {} not computed: Mach {mach}, altitude {altitude:?} m, velocity {velocity:?} m/s, pressure {pressure:?} Pa, temperature {temperature:?} K give no physical flight condition",
                 out.len() + skipped + 1
             ));
             skipped += 1;

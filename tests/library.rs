@@ -438,3 +438,38 @@ fn user_data_that_is_not_a_number_is_not_given() {
     assert_eq!(slope.conditions, empty.conditions);
     assert_eq!(slope.sections, empty.sections);
 }
+
+/// Fuzzing the library found an altitude only reported (pressure and temperature given) of
+/// f64::MAX, and a velocity only reported (with its Mach number) of f64::MIN, kept as the
+/// flight condition's and printed as inf in feet: such a condition is not computed, and the
+/// warning gives its values.
+#[test]
+fn a_reported_altitude_or_velocity_that_no_flight_has_is_refused() {
+    for (what, edit) in [
+        (
+            "altitude",
+            &(|c: &mut datcom::Case| {
+                let f = c.flight.as_mut().unwrap();
+                f.pressure = vec![101_325.0; f.mach.len()];
+                f.temperature = vec![288.15; f.mach.len()];
+                f.altitude = vec![f64::MAX; f.mach.len()];
+            }) as &dyn Fn(&mut datcom::Case),
+        ),
+        ("velocity", &|c: &mut datcom::Case| {
+            // Mach numbers and Reynolds numbers without an atmosphere: the velocity is only
+            // reported.
+            let f = c.flight.as_mut().unwrap();
+            f.altitude.clear();
+            f.reynolds_per_length = vec![1.0e6; f.mach.len()];
+            f.velocity = vec![f64::MIN; f.mach.len()];
+        }),
+    ] {
+        let r = run(edit);
+        assert!(r.conditions.is_empty(), "{what}: {:?}", r.conditions.len());
+        let csv = datcom::report::csv::to_string(&datcom::Results {
+            file: String::new(),
+            cases: vec![r.clone()],
+        });
+        assert!(!csv.contains("inf"), "{what}: {csv}");
+    }
+}
