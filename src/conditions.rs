@@ -185,8 +185,17 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
         let reported = altitude.is_none_or(|z| atmosphere::standard(z).in_range)
             && velocity.is_none_or(|v| (0.0..=VELOCITY_LIMIT).contains(&v));
         if !(finite && reported && physical(pressure) && physical(temperature) && mach >= 0.0) {
+            // The altitude and velocity said when they are numbers (a velocity from a
+            // temperature below zero is not).
+            let given = [("altitude", altitude, "m"), ("velocity", velocity, "m/s")]
+                .into_iter()
+                .filter_map(|(name, v, unit)| {
+                    v.filter(|x| x.is_finite())
+                        .map(|x| format!(", {name} {x:e} {unit}"))
+                })
+                .collect::<String>();
             warnings.push(format!(
-                "condition {} not computed: Mach {mach}, altitude {altitude:?} m, velocity {velocity:?} m/s, pressure {pressure:?} Pa, temperature {temperature:?} K give no physical flight condition",
+                "condition {} not computed: Mach {mach}{given}, pressure {pressure:?} Pa, temperature {temperature:?} K give no physical flight condition",
                 out.len() + skipped + 1
             ));
             skipped += 1;
