@@ -2,7 +2,7 @@
 //! its coefficients against angle of attack. Everything is SI and per radian inside; reports
 //! convert to the deck's units and to per degree unless DERIV RAD.
 
-use crate::case::{Case, Deck, Planform};
+use crate::case::{Case, Deck, Planform, Reference};
 use crate::conditions::FlightCondition;
 use crate::deck::cards::Surface;
 use crate::deck::cards::{DerivUnit, Dim};
@@ -1214,6 +1214,42 @@ pub fn run_case(case: &Case) -> CaseResults {
             Warning::text(format!(
                 "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
                 case.scale
+            )),
+        );
+        return results;
+    }
+    let r = &case.reference;
+    let not_numbers: Vec<&str> = [
+        ("SREF", r.area),
+        ("CBARR", r.chord),
+        ("BLREF", r.span),
+        ("ROUGFC", r.roughness),
+    ]
+    .into_iter()
+    .filter(|(_, v)| v.is_some_and(|x| !x.is_finite()))
+    .map(|(name, _)| name)
+    .collect();
+    if !not_numbers.is_empty() {
+        // A reference value that is not a number is not given, for the methods as for the
+        // results' reference (which already took the wing's instead); found by fuzzing the
+        // library: the methods said "no reference area" while the results gave the wing's.
+        let mut fixed = case.clone();
+        let keep = |v: Option<f64>| v.filter(|x| x.is_finite());
+        fixed.reference = Reference {
+            area: keep(r.area),
+            chord: keep(r.chord),
+            span: keep(r.span),
+            roughness: keep(r.roughness),
+        };
+        let mut results = run_case(&fixed);
+        results.warnings.insert(
+            0,
+            Warning::text(format!(
+                "the case's reference {} not a number: not given",
+                match not_numbers.as_slice() {
+                    [one] => format!("{one} is"),
+                    many => format!("{} are", many.join(", ")),
+                }
             )),
         );
         return results;

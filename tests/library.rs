@@ -142,10 +142,21 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
             r.warnings
         );
     }
-    // Not a number is not given: the wing's area is the reference, as without SREF.
+    // Not a number is not given: the wing's area is the reference, as without SREF, for the
+    // results and for the methods (which said "no reference area" and gave no CL; found by
+    // fuzzing the library).
     let r = run(&|c: &mut datcom::Case| c.reference.area = Some(f64::NAN));
     let wing_area = 2.0 * 1.20 * (0.44 + 0.32) / 2.0;
     assert_eq!(r.reference.area, Some(wing_area));
+    let without = run(&|c: &mut datcom::Case| c.reference.area = None);
+    assert_eq!(r.conditions, without.conditions);
+    assert!(
+        r.warnings
+            .iter()
+            .any(|w| w.to_string().contains("reference SREF is not a number")),
+        "{:?}",
+        r.warnings
+    );
 }
 
 /// Relative difference allowed between a value and the same value written in a deck's units and
