@@ -2,7 +2,7 @@
 //! its coefficients against angle of attack. Everything is SI and per radian inside; reports
 //! convert to the deck's units and to per degree unless DERIV RAD.
 
-use crate::case::{Case, Deck, Planform, Reference};
+use crate::case::{Case, Deck, Planform};
 use crate::conditions::FlightCondition;
 use crate::deck::cards::Surface;
 use crate::deck::cards::{DerivUnit, Dim};
@@ -1194,30 +1194,14 @@ fn reference(case: &Case) -> ReferenceDimensions {
     }
 }
 
-/// Runs one case. A case whose angles of attack are not in increasing order is computed at
-/// its angles in increasing order, each once, with a warning (see
-/// [`crate::case::FlightInput::angles_in_order`]).
-///
-/// A case built in code whose flight conditions were not derived from its `flight` (no
-/// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
-/// gives, with a warning.
-pub fn run_case(case: &Case) -> CaseResults {
-    if !(case.scale.is_finite() && case.scale > 0.0) {
-        // The case's geometry is already scaled; SCALE only turns the reference dimensions
-        // back into the deck's. (A deck's SCALE of zero or less is read as 1 when the case is
-        // typed, so only a case edited in code gets here.)
-        let mut fixed = case.clone();
-        fixed.scale = 1.0;
-        let mut results = run_case(&fixed);
-        results.warnings.insert(
-            0,
-            Warning::text(format!(
-                "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
-                case.scale
-            )),
-        );
-        return results;
-    }
+/// The case with a scale, or a reference value, that is not a positive number, or not a
+/// number, put right, and the warnings that say so; none when there is none. A case typed
+/// from a deck has none (its SCALE of zero or less is read as 1, its values are numbers); a
+/// case edited in code can (found by fuzzing the library: the reference dimensions came out
+/// NaN or infinite, and with SREF NaN the results gave the wing's area while every method said
+/// "no reference area").
+fn without_values_that_are_not_numbers(case: &Case) -> Option<(Case, Vec<Warning>)> {
+    let bad_scale = !(case.scale.is_finite() && case.scale > 0.0);
     let r = &case.reference;
     let not_numbers: Vec<&str> = [
         ("SREF", r.area),
@@ -1229,29 +1213,48 @@ pub fn run_case(case: &Case) -> CaseResults {
     .filter(|(_, v)| v.is_some_and(|x| !x.is_finite()))
     .map(|(name, _)| name)
     .collect();
+    if !bad_scale && not_numbers.is_empty() {
+        return None;
+    }
+    let mut fixed = case.clone();
+    let mut said = Vec::new();
+    if bad_scale {
+        // The case's geometry is already scaled; SCALE only turns the reference dimensions
+        // back into the deck's.
+        fixed.scale = 1.0;
+        said.push(Warning::text(format!(
+            "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
+            case.scale
+        )));
+    }
     if !not_numbers.is_empty() {
-        // A reference value that is not a number is not given, for the methods as for the
-        // results' reference (which already took the wing's instead); found by fuzzing the
-        // library: the methods said "no reference area" while the results gave the wing's.
-        let mut fixed = case.clone();
-        let keep = |v: Option<f64>| v.filter(|x| x.is_finite());
-        fixed.reference = Reference {
-            area: keep(r.area),
-            chord: keep(r.chord),
-            span: keep(r.span),
-            roughness: keep(r.roughness),
-        };
+        let r = &mut fixed.reference;
+        for value in [&mut r.area, &mut r.chord, &mut r.span, &mut r.roughness] {
+            *value = value.filter(|x| x.is_finite());
+        }
+        said.push(Warning::text(match not_numbers.as_slice() {
+            [one] => format!("the case's reference {one} is not a number: not given"),
+            many => format!(
+                "the case's reference {} are not a number: not given",
+                many.join(", ")
+            ),
+        }));
+    }
+    Some((fixed, said))
+}
+
+/// Runs one case. A case whose angles of attack are not in increasing order is computed at
+/// its angles in increasing order, each once, with a warning (see
+/// [`crate::case::FlightInput::angles_in_order`]).
+///
+/// A case built in code whose flight conditions were not derived from its `flight` (no
+/// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
+/// gives, with a warning. So is a case whose scale is not a positive number (taken as 1) or
+/// whose reference values are not numbers (not given).
+pub fn run_case(case: &Case) -> CaseResults {
+    if let Some((fixed, said)) = without_values_that_are_not_numbers(case) {
         let mut results = run_case(&fixed);
-        results.warnings.insert(
-            0,
-            Warning::text(format!(
-                "the case's reference {} not a number: not given",
-                match not_numbers.as_slice() {
-                    [one] => format!("{one} is"),
-                    many => format!("{} are", many.join(", ")),
-                }
-            )),
-        );
+        results.warnings.splice(0..0, said);
         return results;
     }
     if build_up_implied(case) {

@@ -8,6 +8,11 @@ mod common;
 #[path = "../examples/build_case.rs"]
 mod build_case;
 
+/// Whether a warning of `r` says `text`.
+fn says(r: &datcom::results::CaseResults, text: &str) -> bool {
+    r.warnings.iter().any(|w| w.to_string().contains(text))
+}
+
 /// The example's case with `edit` applied, prepared and run.
 fn run(edit: &dyn Fn(&mut datcom::Case)) -> datcom::results::CaseResults {
     let mut case = build_case::example_uav();
@@ -134,13 +139,7 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
             "{what}: {:?}",
             page.static_coefficients.cl
         );
-        assert!(
-            r.warnings
-                .iter()
-                .any(|w| w.to_string().contains(&format!("{what} = "))),
-            "{what}: {:?}",
-            r.warnings
-        );
+        assert!(says(&r, &format!("{what} = ")), "{what}: {:?}", r.warnings);
     }
     // Not a number is not given: the wing's area is the reference, as without SREF, for the
     // results and for the methods (which said "no reference area" and gave no CL; found by
@@ -151,9 +150,7 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
     let without = run(&|c: &mut datcom::Case| c.reference.area = None);
     assert_eq!(r.conditions, without.conditions);
     assert!(
-        r.warnings
-            .iter()
-            .any(|w| w.to_string().contains("reference SREF is not a number")),
+        says(&r, "reference SREF is not a number"),
         "{:?}",
         r.warnings
     );
@@ -371,9 +368,7 @@ fn a_scale_that_is_not_a_positive_number_is_taken_as_one() {
         case.scale = scale;
         let r = datcom::results::run_case(&case);
         assert!(
-            r.warnings.iter().any(|w| w
-                .to_string()
-                .contains("is not a positive number: taken as 1")),
+            says(&r, "is not a positive number: taken as 1"),
             "scale {scale}: {:?}",
             r.warnings
         );

@@ -371,9 +371,8 @@ pub fn low_aspect_ratio_wing_body(
     let swet = need(lb.swet, "SWET")?;
     let perbas = need(lb.perbas, "PERBAS")?;
     let sbase = need(lb.sbase, "SBASE")?;
-    let sbase_given = need(lb.sbase, "SBASE")?;
     // The base's height divides its shape only when there is a base.
-    let hb = if sbase_given > 0.0 {
+    let hb = if sbase > 0.0 {
         positive(lb.hb, "HB")?
     } else {
         need(lb.hb, "HB")?

@@ -14,6 +14,7 @@ use crate::deck::cards::Surface;
 use crate::geometry::{planform as planform_geometry, PlanformGeometry, Span};
 use crate::methods::section::{section_characteristics, surface_section};
 use crate::methods::tail::tail_position;
+use crate::methods::wing::WingType;
 
 /// The sidewash factor (1 + dσ/dβ)·q_v/q of DATCOM 5.3.1.1 (equation 5.3.1.1-b):
 /// 0.724 + 3.06 (S_v/S)/(1 + cos Λc/4) + 0.4 z_w/d + 0.009 A.
@@ -144,8 +145,7 @@ fn chord_at_tail_height(
     // outboard panel the panel is straight whatever TYPE says, as the planform's geometry
     // takes it: a TYPE other than 1 without SSPNOP divided by the outboard panel's zero span
     // above the tip, and took CHRDBP as a break chord below it.
-    let straight_type = crate::methods::wing::WingType::from_input(plan.planform_type)
-        == Some(crate::methods::wing::WingType::Straight)
+    let straight_type = WingType::from_input(plan.planform_type) == Some(WingType::Straight)
         || outboard_span == 0.0;
     if straight_type {
         return (
