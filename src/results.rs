@@ -1250,13 +1250,37 @@ fn without_values_that_are_not_numbers(case: &Case) -> Option<(Case, Vec<Warning
 /// A case built in code whose flight conditions were not derived from its `flight` (no
 /// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
 /// gives, with a warning. So is a case whose scale is not a positive number (taken as 1) or
-/// whose reference values are not numbers (not given).
+/// whose reference values are not numbers (not given). Any other input value that is not a
+/// number (NaN or ±inf) is not given either: the case is computed as its deck would be read
+/// without it ([`Case::without_values_not_numbers`]), with a warning naming each.
 pub fn run_case(case: &Case) -> CaseResults {
     if let Some((fixed, said)) = without_values_that_are_not_numbers(case) {
         let mut results = run_case(&fixed);
         results.warnings.splice(0..0, said);
         return results;
     }
+    if let Some((read, found)) = case.without_values_not_numbers() {
+        let mut results = run_finite_case(&read);
+        results
+            .warnings
+            .insert(0, Warning::text(not_numbers_said(&found)));
+        return results;
+    }
+    run_finite_case(case)
+}
+
+/// What a warning says of a case's values that are not numbers.
+fn not_numbers_said(found: &[crate::case::NotANumber]) -> String {
+    let named: Vec<String> = found.iter().map(ToString::to_string).collect();
+    match named.as_slice() {
+        [] => "a value of the case that is not a number (NaN or infinite) and has no place in its deck is not given: the case is computed as its deck is read".to_string(),
+        [one] => format!("the case's {one} is not a number: not given (the case is computed as its deck is read without it)"),
+        many => format!("the case's {} are not numbers: not given (the case is computed as its deck is read without them)", many.join(", ")),
+    }
+}
+
+/// [`run_case`] for a case whose input numbers are all finite.
+fn run_finite_case(case: &Case) -> CaseResults {
     if build_up_implied(case) {
         // The original's pages for such a case: the whole build-up and the partial output.
         let mut built = case.clone();

@@ -13,8 +13,11 @@ fn says(r: &datcom::results::CaseResults, text: &str) -> bool {
     r.warnings.iter().any(|w| w.to_string().contains(text))
 }
 
+/// An edit of the example's case.
+type Edit = dyn Fn(&mut datcom::Case);
+
 /// The example's case with `edit` applied, prepared and run.
-fn run(edit: &dyn Fn(&mut datcom::Case)) -> datcom::results::CaseResults {
+fn run(edit: &Edit) -> datcom::results::CaseResults {
     let mut case = build_case::example_uav();
     edit(&mut case);
     case.prepare();
@@ -478,4 +481,51 @@ fn a_reported_altitude_or_velocity_that_no_flight_has_is_refused() {
         });
         assert!(!csv.contains("inf"), "{what}: {csv}");
     }
+}
+
+/// Fuzzing the library found input geometry that is not a number (a CHSTAT of inf, a ZCG of
+/// NaN, an ALIW of -inf) giving NaN in the partial output's values, where the coefficient
+/// pages leave the numbers out: such a value is not given, as a deck's reader leaves a
+/// number it cannot read, and a warning names each.
+#[test]
+fn input_geometry_that_is_not_a_number_is_not_given() {
+    let edits: [(&str, &Edit); 4] = [
+        ("$WGPLNF CHSTAT = inf", &|c| {
+            c.wing.as_mut().unwrap().chstat = Some(f64::INFINITY)
+        }),
+        ("$SYNTHS ZCG = NaN", &|c| {
+            c.synthesis.as_mut().unwrap().zcg = Some(f64::NAN)
+        }),
+        ("$SYNTHS ALIW = -inf", &|c| {
+            c.synthesis.as_mut().unwrap().aliw_deg = Some(f64::NEG_INFINITY)
+        }),
+        ("$BODY R(3) = NaN", &|c| {
+            c.body.as_mut().unwrap().r[2] = f64::NAN
+        }),
+    ];
+    for (named, edit) in edits {
+        let with_part = |c: &mut datcom::Case| {
+            c.cards.part = true;
+            edit(c)
+        };
+        let r = run(&with_part);
+        assert!(!r.conditions.is_empty(), "{named}: computed without it");
+        let everything = format!("{:?}", r.conditions);
+        for token in ["NaN", "inf"] {
+            assert!(
+                !everything.contains(token),
+                "{named}: {token} in the results"
+            );
+        }
+        assert!(says(&r, named), "{named}: {:?}", r.warnings);
+        // The same as the case without the value.
+        let mut case = build_case::example_uav();
+        with_part(&mut case);
+        let listed = case.values_not_numbers();
+        assert_eq!(listed.len(), 1, "{named}: {listed:?}");
+        assert_eq!(listed[0].to_string(), named);
+    }
+    let clean = build_case::example_uav();
+    assert!(clean.values_not_numbers().is_empty());
+    assert!(clean.without_values_not_numbers().is_none());
 }

@@ -407,36 +407,114 @@ impl Case {
     pub fn diagnose(&self) -> Vec<crate::error::Diagnostic> {
         use crate::error::{DeckProblem, Diagnostic, Severity};
         let mut raw = self.to_raw();
-        let mut found = Vec::new();
-        for (nl, values) in &mut raw.namelists {
-            for (var, value) in values.iter_mut() {
-                let Value::Numbers(v) = value else { continue };
-                let scalar = v.len() == 1;
-                for (i, x) in v.iter_mut().enumerate() {
-                    if let Some(bad) = x.filter(|x| !x.is_finite()) {
-                        *x = None;
-                        found.push(Diagnostic {
-                            severity: Severity::Error,
-                            file: "case".into(),
-                            line: 0,
-                            column: 0,
-                            card: Some(nl.clone()),
-                            variable: Some(var.clone()),
-                            problem: DeckProblem::Physical {
-                                message: if scalar {
-                                    format!("{var} = {bad}: not a number")
-                                } else {
-                                    format!("{var}({}) = {bad}: not a number", i + 1)
-                                },
-                            },
-                            hint: None,
-                        });
-                    }
-                }
-            }
-        }
+        let mut found: Vec<Diagnostic> = without_values_not_numbers(&mut raw)
+            .into_iter()
+            .map(|v| Diagnostic {
+                severity: Severity::Error,
+                file: "case".into(),
+                line: 0,
+                column: 0,
+                card: Some(v.namelist.clone()),
+                variable: Some(v.variable.clone()),
+                problem: DeckProblem::Physical {
+                    message: format!("{}: not a number", v.assignment()),
+                },
+                hint: None,
+            })
+            .collect();
         let text = crate::deck::writer::write_case(&raw);
         found.extend(crate::read_deck(&text, "case").diagnostics);
         found
     }
+
+    /// The values of this case that are not numbers (NaN or ±inf), by namelist and variable
+    /// as its deck ([`Case::to_raw`]) gives them; none for a case read from a deck.
+    pub fn values_not_numbers(&self) -> Vec<NotANumber> {
+        if !super::finite::holds_value_not_a_number(self) {
+            return Vec::new();
+        }
+        without_values_not_numbers(&mut self.to_raw())
+    }
+
+    /// This case as its deck would be read without its values that are not numbers, and
+    /// those values; `None` when it has none (always for a case read from a deck). The deck
+    /// is this case's [`Case::to_raw`] with each such value not given, as a deck's reader
+    /// leaves a number it cannot read; the reading rules, number and place are this case's.
+    /// Lengths go through the deck's units and back, so they can differ from this case's in
+    /// the last digit when its units are not metres.
+    pub fn without_values_not_numbers(&self) -> Option<(Case, Vec<NotANumber>)> {
+        if !super::finite::holds_value_not_a_number(self) {
+            return None;
+        }
+        let mut raw = self.to_raw();
+        let found = without_values_not_numbers(&mut raw);
+        let (read, _checks) = Case::from_raw(&raw, "case");
+        Some((
+            Case {
+                number: self.number,
+                first_line: self.first_line,
+                section_reynolds: self.section_reynolds,
+                five_digit: self.five_digit,
+                section_maximum: self.section_maximum,
+                six_a: self.six_a,
+                zero_lift: self.zero_lift,
+                forward_sweep: self.forward_sweep,
+                tail_slope: self.tail_slope,
+                outboard_section: self.outboard_section,
+                jorgensen_drag: self.jorgensen_drag,
+                ..read
+            },
+            found,
+        ))
+    }
+}
+
+/// A value of a case that is not a number, where its deck would give it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NotANumber {
+    pub namelist: String,
+    pub variable: String,
+    /// The element (from 1) of an array; none for a scalar.
+    pub element: Option<usize>,
+    pub value: f64,
+}
+
+impl NotANumber {
+    /// `VAR = value` or `VAR(k) = value`.
+    pub fn assignment(&self) -> String {
+        match self.element {
+            Some(k) => format!("{}({k}) = {}", self.variable, self.value),
+            None => format!("{} = {}", self.variable, self.value),
+        }
+    }
+}
+
+impl std::fmt::Display for NotANumber {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "${} {}", self.namelist, self.assignment())
+    }
+}
+
+/// Takes every value that is not a number out of `raw`'s namelists (not given, as a deck's
+/// reader leaves a number it cannot read) and returns them, in the namelists' order.
+fn without_values_not_numbers(raw: &mut RawCase) -> Vec<NotANumber> {
+    let mut found = Vec::new();
+    for (nl, values) in &mut raw.namelists {
+        for (var, value) in values.iter_mut() {
+            let Value::Numbers(v) = value else { continue };
+            let scalar = v.len() == 1;
+            for (i, x) in v.iter_mut().enumerate() {
+                if let Some(bad) = x.filter(|x| !x.is_finite()) {
+                    *x = None;
+                    found.push(NotANumber {
+                        namelist: nl.clone(),
+                        variable: var.clone(),
+                        element: (!scalar).then_some(i + 1),
+                        value: bad,
+                    });
+                }
+            }
+        }
+    }
+    found
 }

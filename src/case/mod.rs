@@ -8,7 +8,10 @@
 //! effect, ...) are kept as read, in the deck's units, in [`Case::other`].
 
 mod deck_form;
+mod finite;
 pub mod units;
+
+pub use deck_form::NotANumber;
 
 use std::collections::BTreeMap;
 
