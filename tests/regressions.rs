@@ -1693,3 +1693,27 @@ fn lifting_body_without_frontal_area_or_base_height_is_refused() {
     }
     no_non_finite(&no_base);
 }
+
+/// A deck's SCALE of zero or less was read as 1 without a word (found by reviewing the
+/// library fuzzing's fixes, where a case built in code with such a scale gets a warning):
+/// the deck's check says it is not positive.
+#[test]
+fn a_scale_of_zero_or_less_is_an_error() {
+    for scale in ["0.0", "-0.5"] {
+        let d = read(&format!(
+            " $FLTCON NMACH=1.0, MACH(1)=0.4, NALT=1.0, ALT(1)=0.0, NALPHA=1.0, ALSCHD(1)=0.0$\n $SYNTHS XCG=1.0, SCALE={scale}$\n $BODY NX=2.0, X(1)=0.0,1.0, R(1)=0.1,0.1$\n"
+        ));
+        assert!(
+            d.diagnostics
+                .iter()
+                .any(|x| x.severity == Severity::Error && x.variable.as_deref() == Some("SCALE")),
+            "SCALE={scale}: {:?}",
+            d.diagnostics
+        );
+        assert_eq!(d.cases[0].scale, 1.0);
+    }
+    assert!(!read(&format!("{FLIGHT} $SYNTHS SCALE=0.5$\n"))
+        .diagnostics
+        .iter()
+        .any(|x| x.variable.as_deref() == Some("SCALE")));
+}

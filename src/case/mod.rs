@@ -1573,6 +1573,8 @@ impl Case {
         c.positive("OPTINS", "SREF");
         c.positive("OPTINS", "CBARR");
         c.positive("OPTINS", "BLREF");
+        // The geometry is multiplied by SCALE: one of zero or less is read as 1.
+        c.positive("SYNTHS", "SCALE");
         for (name, p) in [
             ("WGPLNF", &self.wing),
             ("HTPLNF", &self.horizontal_tail),
