@@ -54,6 +54,33 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
             }
         })
         .collect();
+    // Stations a few units of f64's least value apart pass the increasing test, but the mean
+    // line's slope through them, or the surfaces laid off along it, are not numbers.
+    if let Some(i) = rows
+        .iter()
+        .position(|r| r.values().iter().any(|v| !v.is_finite()))
+    {
+        return Err(problem(
+            "XCORD",
+            format!(
+                "XCORD({}) = {:e}: the stations beside it are too close together for the mean \
+                 line's slope there to be a number",
+                i + 1,
+                x[i]
+            ),
+        ));
+    }
+    let leading_edge_radius = leading_edge_radius(input, x[1], half[1])?;
+    if !leading_edge_radius.is_finite() {
+        return Err(problem(
+            "XCORD",
+            format!(
+                "XCORD(2) = {:e}: too close to the leading edge for the leading-edge radius \
+                 (x² + y_t²)/(2x) to be a number; give LERI",
+                x[1]
+            ),
+        ));
+    }
     let (max_thickness, max_thickness_x) = rows.iter().fold((0.0, 0.0), |(t, at), r| {
         if r.thickness > t {
             (r.thickness, r.x)
@@ -67,7 +94,7 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
         rows,
         max_thickness,
         max_thickness_x,
-        leading_edge_radius: leading_edge_radius(input, x[1], half[1])?,
+        leading_edge_radius,
         warnings,
     })
 }
@@ -317,6 +344,25 @@ mod tests {
             (input(1.0, &x, &z, &y), "YUPPER: value 2 lies below YLOWER"),
             (input(1.0, &x, &y, &z[..2]), "YLOWER: 2 values for NPTS = 3"),
             (input(1.0, &x[..2], &y[..2], &z[..2]), "NPTS: 2 points"),
+            // Found by fuzzing the library: stations 5e-324 apart gave NaN surfaces.
+            (
+                input(
+                    1.0,
+                    &[0.0, 5e-324, 0.5, 1.0],
+                    &[0.0, 0.02, 0.05, 0.0],
+                    &[0.0; 4],
+                ),
+                "XCORD(2) = 5e-324: the stations beside it are too close together",
+            ),
+            (
+                input(
+                    1.0,
+                    &[0.0, 1e-313, 0.5, 1.0],
+                    &[0.0, 0.02, 0.05, 0.0],
+                    &[0.0, -0.02, -0.05, 0.0],
+                ),
+                "XCORD(2) = 1e-313: too close to the leading edge",
+            ),
         ];
         for (s, why) in cases {
             let e = user_defined(&s).unwrap_err().to_string();
