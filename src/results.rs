@@ -1273,7 +1273,7 @@ pub fn run_case(case: &Case) -> CaseResults {
 fn not_numbers_said(found: &[crate::case::NotANumber]) -> String {
     let named: Vec<String> = found.iter().map(ToString::to_string).collect();
     match named.as_slice() {
-        [] => "a value of the case that is not a number (NaN or infinite) and has no place in its deck is not given: the case is computed as its deck is read".to_string(),
+        [] => "a value of the case is not a number: the case is computed as its deck is read".to_string(),
         [one] => format!("the case's {one} is not a number: not given (the case is computed as its deck is read without it)"),
         many => format!("the case's {} are not numbers: not given (the case is computed as its deck is read without them)", many.join(", ")),
     }

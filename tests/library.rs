@@ -489,7 +489,7 @@ fn a_reported_altitude_or_velocity_that_no_flight_has_is_refused() {
 /// number it cannot read, and a warning names each.
 #[test]
 fn input_geometry_that_is_not_a_number_is_not_given() {
-    let edits: [(&str, &Edit); 4] = [
+    let edits: [(&str, &Edit); 5] = [
         ("$WGPLNF CHSTAT = inf", &|c| {
             c.wing.as_mut().unwrap().chstat = Some(f64::INFINITY)
         }),
@@ -501,6 +501,10 @@ fn input_geometry_that_is_not_a_number_is_not_given() {
         }),
         ("$BODY R(3) = NaN", &|c| {
             c.body.as_mut().unwrap().r[2] = f64::NAN
+        }),
+        // A field the deck has no place for (the deck's SCALE is the case's `scale`).
+        ("synthesis.scale = NaN (not in its deck)", &|c| {
+            c.synthesis.as_mut().unwrap().scale = Some(f64::NAN)
         }),
     ];
     for (named, edit) in edits {

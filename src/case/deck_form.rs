@@ -430,10 +430,15 @@ impl Case {
     /// The values of this case that are not numbers (NaN or ±inf), by namelist and variable
     /// as its deck ([`Case::to_raw`]) gives them; none for a case read from a deck.
     pub fn values_not_numbers(&self) -> Vec<NotANumber> {
-        if !super::finite::holds_value_not_a_number(self) {
+        let Some(first) = super::finite::first_value_not_a_number(self) else {
             return Vec::new();
+        };
+        let found = without_values_not_numbers(&mut self.to_raw());
+        if found.is_empty() {
+            vec![NotANumber::outside_the_deck(first)]
+        } else {
+            found
         }
-        without_values_not_numbers(&mut self.to_raw())
     }
 
     /// This case as its deck would be read without its values that are not numbers, and
@@ -443,11 +448,12 @@ impl Case {
     /// Lengths go through the deck's units and back, so they can differ from this case's in
     /// the last digit when its units are not metres.
     pub fn without_values_not_numbers(&self) -> Option<(Case, Vec<NotANumber>)> {
-        if !super::finite::holds_value_not_a_number(self) {
-            return None;
-        }
+        let first = super::finite::first_value_not_a_number(self)?;
         let mut raw = self.to_raw();
-        let found = without_values_not_numbers(&mut raw);
+        let mut found = without_values_not_numbers(&mut raw);
+        if found.is_empty() {
+            found.push(NotANumber::outside_the_deck(first));
+        }
         let (read, _checks) = Case::from_raw(&raw, "case");
         Some((
             Case {
@@ -472,6 +478,8 @@ impl Case {
 /// A value of a case that is not a number, where its deck would give it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct NotANumber {
+    /// The namelist; empty for a field of the case that its deck has no place for (the
+    /// variable is then the field's path in the case, `synthesis.scale`).
     pub namelist: String,
     pub variable: String,
     /// The element (from 1) of an array; none for a scalar.
@@ -480,6 +488,17 @@ pub struct NotANumber {
 }
 
 impl NotANumber {
+    /// The first value found by the walk of the case's fields, when the deck has no place
+    /// for it.
+    fn outside_the_deck((path, value): (String, f64)) -> NotANumber {
+        NotANumber {
+            namelist: String::new(),
+            variable: path,
+            element: None,
+            value,
+        }
+    }
+
     /// `VAR = value` or `VAR(k) = value`.
     pub fn assignment(&self) -> String {
         match self.element {
@@ -491,7 +510,11 @@ impl NotANumber {
 
 impl std::fmt::Display for NotANumber {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "${} {}", self.namelist, self.assignment())
+        if self.namelist.is_empty() {
+            write!(f, "{} (not in its deck)", self.assignment())
+        } else {
+            write!(f, "${} {}", self.namelist, self.assignment())
+        }
     }
 }
 

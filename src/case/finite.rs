@@ -3,8 +3,9 @@
 //! A deck cannot give one (the reader refuses numbers beyond double precision), but a case
 //! built or edited in code can. The search walks the case's serialized form, so every number
 //! of every input structure is seen, including fields added later, without a list to keep.
-//! It stops at the first such value and allocates nothing; naming the values is
-//! [`super::Case::values_not_numbers`]'s work, done only when there is one.
+//! It stops at the first such value and allocates nothing until then; naming the values by
+//! namelist and variable is [`super::Case::values_not_numbers`]'s work, done only when there
+//! is one.
 
 use serde::ser::{self, Serialize, Serializer};
 
@@ -14,18 +15,44 @@ use super::Case;
 /// derived from `flight` and checked where they are derived.
 const DERIVED_FIELDS: [&str; 1] = ["conditions"];
 
-/// Whether any input number of `case` is NaN or infinite.
-pub(super) fn holds_value_not_a_number(case: &Case) -> bool {
-    case.serialize(Finder).is_err()
+/// The first input number of `case` that is NaN or infinite, if any: the path of its field
+/// in the case (`synthesis.zcg`, `body.r[2]`; a map's entry by its place, `sections{1}`) and
+/// its value.
+pub(super) fn first_value_not_a_number(case: &Case) -> Option<(String, f64)> {
+    case.serialize(Finder)
+        .err()
+        .map(|e| (e.path.unwrap_or_default(), e.value))
 }
 
-/// Why the walk stopped: a value that is not a number (the only "error").
+/// Why the walk stopped: a value that is not a number (the only "error"), and where, written
+/// as the walk returns through the fields that hold it.
 #[derive(Debug)]
-struct NotANumber;
+struct NotANumber {
+    value: f64,
+    /// None at the value itself; the field path above it as it is returned.
+    path: Option<String>,
+}
+
+impl NotANumber {
+    /// The same value, one field further out (`.name`, `[index]`, `{entry}`).
+    fn inside(self, step: std::fmt::Arguments) -> NotANumber {
+        let path = match self.path {
+            Some(below) if below.starts_with('[') || below.starts_with('{') => {
+                format!("{step}{below}")
+            }
+            Some(below) => format!("{step}.{below}"),
+            None => step.to_string(),
+        };
+        NotANumber {
+            value: self.value,
+            path: Some(path),
+        }
+    }
+}
 
 impl std::fmt::Display for NotANumber {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("a value that is not a number")
+        write!(f, "{} = {}", self.path.as_deref().unwrap_or(""), self.value)
     }
 }
 
@@ -33,7 +60,10 @@ impl std::error::Error for NotANumber {}
 
 impl ser::Error for NotANumber {
     fn custom<T: std::fmt::Display>(_: T) -> Self {
-        NotANumber
+        NotANumber {
+            value: f64::NAN,
+            path: None,
+        }
     }
 }
 
@@ -45,6 +75,23 @@ struct Finder;
 struct Members {
     /// The field names skipped (the case's derived fields; none elsewhere).
     skip: &'static [&'static str],
+    /// The members walked so far.
+    count: usize,
+}
+
+impl Members {
+    /// Walks the next member, naming it by its place when the value is not a number.
+    fn element<T: ?Sized + Serialize>(&mut self, value: &T, brackets: bool) -> Walked {
+        let k = self.count;
+        self.count += 1;
+        value.serialize(Finder).map_err(|e| {
+            if brackets {
+                e.inside(format_args!("[{k}]"))
+            } else {
+                e.inside(format_args!("{{{k}}}"))
+            }
+        })
+    }
 }
 
 type Walked = Result<(), NotANumber>;
@@ -53,11 +100,17 @@ fn finite(v: f64) -> Walked {
     if v.is_finite() {
         Ok(())
     } else {
-        Err(NotANumber)
+        Err(NotANumber {
+            value: v,
+            path: None,
+        })
     }
 }
 
-const NOTHING: Members = Members { skip: &[] };
+const NOTHING: Members = Members {
+    skip: &[],
+    count: 0,
+};
 
 impl Serializer for Finder {
     type Ok = ();
@@ -164,6 +217,7 @@ impl Serializer for Finder {
         Ok(if name == "Case" {
             Members {
                 skip: &DERIVED_FIELDS,
+                count: 0,
             }
         } else {
             NOTHING
@@ -184,7 +238,7 @@ impl ser::SerializeSeq for Members {
     type Ok = ();
     type Error = NotANumber;
     fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        value.serialize(Finder)
+        self.element(value, true)
     }
     fn end(self) -> Walked {
         Ok(())
@@ -195,7 +249,7 @@ impl ser::SerializeTuple for Members {
     type Ok = ();
     type Error = NotANumber;
     fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        value.serialize(Finder)
+        self.element(value, true)
     }
     fn end(self) -> Walked {
         Ok(())
@@ -206,7 +260,7 @@ impl ser::SerializeTupleStruct for Members {
     type Ok = ();
     type Error = NotANumber;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        value.serialize(Finder)
+        self.element(value, true)
     }
     fn end(self) -> Walked {
         Ok(())
@@ -217,7 +271,7 @@ impl ser::SerializeTupleVariant for Members {
     type Ok = ();
     type Error = NotANumber;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        value.serialize(Finder)
+        self.element(value, true)
     }
     fn end(self) -> Walked {
         Ok(())
@@ -231,7 +285,7 @@ impl ser::SerializeMap for Members {
         key.serialize(Finder)
     }
     fn serialize_value<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        value.serialize(Finder)
+        self.element(value, false)
     }
     fn end(self) -> Walked {
         Ok(())
@@ -245,7 +299,9 @@ impl ser::SerializeStruct for Members {
         if self.skip.contains(&key) {
             return Ok(());
         }
-        value.serialize(Finder)
+        value
+            .serialize(Finder)
+            .map_err(|e| e.inside(format_args!("{key}")))
     }
     fn end(self) -> Walked {
         Ok(())
@@ -255,10 +311,66 @@ impl ser::SerializeStruct for Members {
 impl ser::SerializeStructVariant for Members {
     type Ok = ();
     type Error = NotANumber;
-    fn serialize_field<T: ?Sized + Serialize>(&mut self, _: &'static str, value: &T) -> Walked {
-        value.serialize(Finder)
+    fn serialize_field<T: ?Sized + Serialize>(&mut self, key: &'static str, value: &T) -> Walked {
+        value
+            .serialize(Finder)
+            .map_err(|e| e.inside(format_args!("{key}")))
     }
     fn end(self) -> Walked {
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::case::{Body, SectionInput, Synthesis};
+
+    #[test]
+    fn the_first_value_not_a_number_is_named_by_its_field() {
+        let mut case = Case::new();
+        assert_eq!(first_value_not_a_number(&case), None);
+        case.body = Some(Body {
+            x: vec![0.0, 1.0, 2.0],
+            r: vec![0.0, 0.1, f64::INFINITY],
+            ..Body::default()
+        });
+        let (path, value) = first_value_not_a_number(&case).unwrap();
+        assert_eq!((path.as_str(), value), ("body.r[2]", f64::INFINITY));
+
+        case.body = None;
+        case.synthesis = Some(Synthesis {
+            scale: Some(f64::NAN),
+            ..Synthesis::default()
+        });
+        let (path, value) = first_value_not_a_number(&case).unwrap();
+        assert_eq!(path, "synthesis.scale");
+        assert!(value.is_nan());
+
+        case.synthesis = None;
+        let mut section = SectionInput::default();
+        section.scalars.insert("TOVC".into(), 0.12);
+        section.scalars.insert("XOVC".into(), f64::NEG_INFINITY);
+        case.sections.insert("WING".into(), section);
+        let (path, _) = first_value_not_a_number(&case).unwrap();
+        assert_eq!(path, "sections{0}.scalars{1}", "map entries by their place");
+    }
+
+    /// The flight conditions are derived from the flight input and checked where they are
+    /// derived: the walk leaves them.
+    #[test]
+    fn derived_conditions_are_not_input() {
+        let mut case = Case::new();
+        case.flight = Some(crate::case::FlightInput {
+            mach: vec![0.2],
+            altitude: vec![0.0],
+            alpha_deg: vec![0.0],
+            ..Default::default()
+        });
+        case.prepare();
+        let mut condition = case.conditions[0].clone();
+        condition.mach = f64::NAN;
+        case.conditions.push(condition);
+        assert_eq!(first_value_not_a_number(&case), None);
     }
 }
