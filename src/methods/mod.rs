@@ -1,5 +1,12 @@
 //! DATCOM methods, one module per section family of the handbook. Each method is a pure
 //! function over geometry and flight conditions that returns its named terms and warnings.
+//!
+//! The methods take their input as given: they do not check a case for values that are not
+//! numbers (NaN or ±inf, which no deck can give), and such a value gives terms that are not
+//! numbers either. [`crate::results::run_case`] checks the case first and computes it without
+//! them, with a warning; before calling a method directly on a case built in code, check it
+//! with [`crate::Case::values_not_numbers`] (or [`crate::Case::diagnose`], which also gives
+//! the deck's checks).
 
 pub mod body;
 pub mod dynamic;
