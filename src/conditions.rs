@@ -187,16 +187,25 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
         if !(finite && reported && physical(pressure) && physical(temperature) && mach >= 0.0) {
             // The altitude and velocity said when they are numbers (a velocity from a
             // temperature below zero is not).
-            let given = [("altitude", altitude, "m"), ("velocity", velocity, "m/s")]
-                .into_iter()
-                .filter_map(|(name, v, unit)| {
-                    v.filter(|x| x.is_finite())
-                        .map(|x| format!(", {name} {x:e} {unit}"))
-                })
-                .collect::<String>();
+            // Pressure and temperature as given, or not given (they are then the altitude's).
+            let given = [
+                ("altitude", altitude, "m", true),
+                ("velocity", velocity, "m/s", true),
+                ("pressure", pressure, "Pa", false),
+                ("temperature", temperature, "K", false),
+            ]
+            .into_iter()
+            .filter_map(|(name, v, unit, numbers_only)| match v {
+                Some(x) if x.is_finite() || !numbers_only => {
+                    Some(format!(", {name} {} {unit}", crate::charts::Query(x)))
+                }
+                _ => None,
+            })
+            .collect::<String>();
             warnings.push(format!(
-                "condition {} not computed: Mach {mach}{given}, pressure {pressure:?} Pa, temperature {temperature:?} K give no physical flight condition",
-                out.len() + skipped + 1
+                "condition {} not computed: Mach {}{given} give no physical flight condition",
+                out.len() + skipped + 1,
+                crate::charts::Query(mach)
             ));
             skipped += 1;
             continue;

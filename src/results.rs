@@ -1194,52 +1194,20 @@ fn reference(case: &Case) -> ReferenceDimensions {
     }
 }
 
-/// The case with a scale, or a reference value, that is not a positive number, or not a
-/// number, put right, and the warnings that say so; none when there is none. A case typed
-/// from a deck has none (its SCALE of zero or less is read as 1, its values are numbers); a
-/// case edited in code can (found by fuzzing the library: the reference dimensions came out
-/// NaN or infinite, and with SREF NaN the results gave the wing's area while every method said
-/// "no reference area").
-fn without_values_that_are_not_numbers(case: &Case) -> Option<(Case, Vec<Warning>)> {
-    let bad_scale = !(case.scale.is_finite() && case.scale > 0.0);
-    let r = &case.reference;
-    let not_numbers: Vec<&str> = [
-        ("SREF", r.area),
-        ("CBARR", r.chord),
-        ("BLREF", r.span),
-        ("ROUGFC", r.roughness),
-    ]
-    .into_iter()
-    .filter(|(_, v)| v.is_some_and(|x| !x.is_finite()))
-    .map(|(name, _)| name)
-    .collect();
-    if !bad_scale && not_numbers.is_empty() {
+/// A case whose scale is not a positive number: the same case with a scale of 1, and the
+/// warning that says so.
+fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
+    if case.scale.is_finite() && case.scale > 0.0 {
         return None;
     }
+    // The case's geometry is already scaled; SCALE only turns the reference dimensions back
+    // into the deck's.
     let mut fixed = case.clone();
-    let mut said = Vec::new();
-    if bad_scale {
-        // The case's geometry is already scaled; SCALE only turns the reference dimensions
-        // back into the deck's.
-        fixed.scale = 1.0;
-        said.push(Warning::text(format!(
-            "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
-            case.scale
-        )));
-    }
-    if !not_numbers.is_empty() {
-        let r = &mut fixed.reference;
-        for value in [&mut r.area, &mut r.chord, &mut r.span, &mut r.roughness] {
-            *value = value.filter(|x| x.is_finite());
-        }
-        said.push(Warning::text(match not_numbers.as_slice() {
-            [one] => format!("the case's reference {one} is not a number: not given"),
-            many => format!(
-                "the case's reference {} are not a number: not given",
-                many.join(", ")
-            ),
-        }));
-    }
+    fixed.scale = 1.0;
+    let said = Warning::text(format!(
+        "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
+        case.scale
+    ));
     Some((fixed, said))
 }
 
@@ -1249,38 +1217,42 @@ fn without_values_that_are_not_numbers(case: &Case) -> Option<(Case, Vec<Warning
 ///
 /// A case built in code whose flight conditions were not derived from its `flight` (no
 /// [`Case::prepare`] after `flight` was set or changed) is computed at the conditions `flight`
-/// gives, with a warning. So is a case whose scale is not a positive number (taken as 1) or
-/// whose reference values are not numbers (not given). Any other input value that is not a
-/// number (NaN or ±inf) is not given either: the case is computed as its deck would be read
-/// without it ([`Case::without_values_not_numbers`]), with a warning naming each.
+/// gives, with a warning. So is a case whose scale is not a positive number (taken as 1). An
+/// optional input value that is not a number (NaN or ±inf, which no deck can give: a
+/// reference area, a chord station, a position) is not given, with a warning naming each; an
+/// element of an array that is not a number is refused by what reads it, which says so (a
+/// flight condition, a body, a section's coordinates).
 pub fn run_case(case: &Case) -> CaseResults {
-    if let Some((fixed, said)) = without_values_that_are_not_numbers(case) {
+    if let Some((fixed, said)) = with_a_scale_that_is_a_number(case) {
         let mut results = run_case(&fixed);
-        results.warnings.splice(0..0, said);
+        results.warnings.insert(0, said);
         return results;
     }
-    if let Some((read, found)) = case.without_values_not_numbers() {
-        let mut results = run_finite_case(&read);
-        results
-            .warnings
-            .insert(0, Warning::text(not_numbers_said(&found)));
+    if let Some((fixed, found)) = case.without_scalars_not_numbers() {
+        let mut results = run_scalars_given(&fixed);
+        if let Some(said) = not_numbers_said(&found) {
+            results.warnings.insert(0, Warning::text(said));
+        }
         return results;
     }
-    run_finite_case(case)
+    run_scalars_given(case)
 }
 
-/// What a warning says of a case's values that are not numbers.
-fn not_numbers_said(found: &[crate::case::NotANumber]) -> String {
+/// What a warning says of a case's values that are not numbers, taken out as not given.
+fn not_numbers_said(found: &[crate::case::NotANumber]) -> Option<String> {
     let named: Vec<String> = found.iter().map(ToString::to_string).collect();
     match named.as_slice() {
-        [] => "a value of the case is not a number: the case is computed as its deck is read".to_string(),
-        [one] => format!("the case's {one} is not a number: not given (the case is computed as its deck is read without it)"),
-        many => format!("the case's {} are not numbers: not given (the case is computed as its deck is read without them)", many.join(", ")),
+        [] => None,
+        [one] => Some(format!("the case's {one} is not a number: not given")),
+        many => Some(format!(
+            "the case's {} are not numbers: not given",
+            many.join(", ")
+        )),
     }
 }
 
-/// [`run_case`] for a case whose input numbers are all finite.
-fn run_finite_case(case: &Case) -> CaseResults {
+/// [`run_case`] for a case whose optional input values are all numbers.
+fn run_scalars_given(case: &Case) -> CaseResults {
     if build_up_implied(case) {
         // The original's pages for such a case: the whole build-up and the partial output.
         let mut built = case.clone();

@@ -153,7 +153,10 @@ fn values_a_deck_would_refuse_are_refused_in_code() {
     let without = run(&|c: &mut datcom::Case| c.reference.area = None);
     assert_eq!(r.conditions, without.conditions);
     assert!(
-        says(&r, "reference SREF is not a number"),
+        says(
+            &r,
+            "the case's $OPTINS SREF = NaN is not a number: not given"
+        ),
         "{:?}",
         r.warnings
     );
@@ -384,6 +387,14 @@ fn a_scale_that_is_not_a_positive_number_is_taken_as_one() {
             file: String::new(),
         });
         assert_eq!(json, reference, "scale {scale}");
+        // `check` says so too (found by review: the deck written had the scale of 1).
+        assert!(
+            case.diagnose()
+                .iter()
+                .any(|d| d.severity == datcom::Severity::Error
+                    && d.variable.as_deref() == Some("SCALE")),
+            "scale {scale}"
+        );
     }
 }
 
@@ -483,53 +494,119 @@ fn a_reported_altitude_or_velocity_that_no_flight_has_is_refused() {
     }
 }
 
+/// Words of a debug text that are a value that is not a number (`NaN`, `inf`, `-inf`).
+fn not_numbers_in(text: &str) -> usize {
+    text.split(|c: char| !c.is_alphanumeric())
+        .filter(|w| *w == "NaN" || *w == "inf")
+        .count()
+}
+
 /// Fuzzing the library found input geometry that is not a number (a CHSTAT of inf, a ZCG of
 /// NaN, an ALIW of -inf) giving NaN in the partial output's values, where the coefficient
-/// pages leave the numbers out: such a value is not given, as a deck's reader leaves a
-/// number it cannot read, and a warning names each.
+/// pages leave the numbers out: such an optional value is not given, and a warning names
+/// each. The results are those of the case without it.
 #[test]
-fn input_geometry_that_is_not_a_number_is_not_given() {
-    let edits: [(&str, &Edit); 5] = [
-        ("$WGPLNF CHSTAT = inf", &|c| {
-            c.wing.as_mut().unwrap().chstat = Some(f64::INFINITY)
-        }),
-        ("$SYNTHS ZCG = NaN", &|c| {
-            c.synthesis.as_mut().unwrap().zcg = Some(f64::NAN)
-        }),
-        ("$SYNTHS ALIW = -inf", &|c| {
-            c.synthesis.as_mut().unwrap().aliw_deg = Some(f64::NEG_INFINITY)
-        }),
-        ("$BODY R(3) = NaN", &|c| {
-            c.body.as_mut().unwrap().r[2] = f64::NAN
-        }),
-        // A field the deck has no place for (the deck's SCALE is the case's `scale`).
-        ("synthesis.scale = NaN (not in its deck)", &|c| {
-            c.synthesis.as_mut().unwrap().scale = Some(f64::NAN)
-        }),
+fn an_optional_value_that_is_not_a_number_is_not_given() {
+    let edits: [(&str, &Edit, &Edit); 5] = [
+        (
+            "$WGPLNF CHSTAT = inf",
+            &|c| c.wing.as_mut().unwrap().chstat = Some(f64::INFINITY),
+            &|c| c.wing.as_mut().unwrap().chstat = None,
+        ),
+        (
+            "$SYNTHS ZCG = NaN",
+            &|c| c.synthesis.as_mut().unwrap().zcg = Some(f64::NAN),
+            &|c| c.synthesis.as_mut().unwrap().zcg = None,
+        ),
+        (
+            "$SYNTHS ALIW = -inf",
+            &|c| c.synthesis.as_mut().unwrap().aliw_deg = Some(f64::NEG_INFINITY),
+            &|c| c.synthesis.as_mut().unwrap().aliw_deg = None,
+        ),
+        // SCALE beside the case's own `scale`, which the deck gives.
+        (
+            "$SYNTHS SCALE = NaN",
+            &|c| c.synthesis.as_mut().unwrap().scale = Some(f64::NAN),
+            &|c| c.synthesis.as_mut().unwrap().scale = None,
+        ),
+        (
+            "$OPTINS CBARR = inf",
+            &|c| c.reference.chord = Some(f64::INFINITY),
+            &|c| c.reference.chord = None,
+        ),
     ];
-    for (named, edit) in edits {
-        let with_part = |c: &mut datcom::Case| {
+    for (named, bad, none) in edits {
+        let r = run(&|c: &mut datcom::Case| {
             c.cards.part = true;
-            edit(c)
-        };
-        let r = run(&with_part);
-        assert!(!r.conditions.is_empty(), "{named}: computed without it");
-        let everything = format!("{:?}", r.conditions);
-        for token in ["NaN", "inf"] {
-            assert!(
-                !everything.contains(token),
-                "{named}: {token} in the results"
-            );
-        }
-        assert!(says(&r, named), "{named}: {:?}", r.warnings);
-        // The same as the case without the value.
+            bad(c)
+        });
+        let expected = run(&|c: &mut datcom::Case| {
+            c.cards.part = true;
+            none(c)
+        });
+        assert_eq!(not_numbers_in(&format!("{:?}", r.conditions)), 0, "{named}");
+        assert_eq!(r.conditions, expected.conditions, "{named}");
+        assert_eq!(r.sections, expected.sections, "{named}");
+        assert!(
+            says(
+                &r,
+                &format!("the case's {named} is not a number: not given")
+            ),
+            "{named}: {:?}",
+            r.warnings
+        );
+
         let mut case = build_case::example_uav();
-        with_part(&mut case);
+        bad(&mut case);
         let listed = case.values_not_numbers();
         assert_eq!(listed.len(), 1, "{named}: {listed:?}");
         assert_eq!(listed[0].to_string(), named);
+        // `check` says the same of the case.
+        let said = listed[0].assignment();
+        assert!(
+            case.diagnose()
+                .iter()
+                .any(|d| d.severity == datcom::Severity::Error && d.to_string().contains(&said)),
+            "{named}: diagnose does not say {said}"
+        );
     }
     let clean = build_case::example_uav();
     assert!(clean.values_not_numbers().is_empty());
-    assert!(clean.without_values_not_numbers().is_none());
+}
+
+/// An element of an array that is not a number is refused where the array is read, which
+/// says so: the flight condition at a Mach number that is not a number, the body with a
+/// radius that is not one. The other conditions, and the other components, are computed.
+/// (The review of the first fix found it read the case as a deck, where such an element ended
+/// the array: every later Mach number was lost.)
+#[test]
+fn an_array_element_that_is_not_a_number_is_refused_where_it_is_read() {
+    let plain = run(&|_| {});
+    let mach = run(&|c: &mut datcom::Case| c.flight.as_mut().unwrap().mach[0] = f64::NAN);
+    // The example pairs its two Mach numbers with two altitudes: the first Mach number's two
+    // conditions are refused, the second's computed.
+    assert_eq!(plain.conditions.len(), 4);
+    assert_eq!(mach.conditions.len(), 2);
+    assert!(mach.conditions.iter().all(|c| c.condition.mach == 0.09));
+    for k in [1, 3] {
+        let refused = format!("condition {k} not computed: Mach NaN");
+        assert!(says(&mach, &refused), "{refused}: {:?}", mach.warnings);
+    }
+    let body = run(&|c: &mut datcom::Case| c.body.as_mut().unwrap().r[2] = f64::NAN);
+    assert!(says(
+        &body,
+        "body geometry: R(3) = NaN (SI): must be finite"
+    ));
+    for r in [&mach, &body] {
+        assert_eq!(not_numbers_in(&format!("{:?}", r.conditions)), 0);
+    }
+    let mut case = build_case::example_uav();
+    case.flight.as_mut().unwrap().mach[0] = f64::NAN;
+    case.body.as_mut().unwrap().r[2] = f64::NAN;
+    let listed: Vec<String> = case
+        .values_not_numbers()
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    assert_eq!(listed, ["$FLTCON MACH(1) = NaN", "$BODY R(3) = NaN"]);
 }

@@ -115,41 +115,30 @@ impl Namelists<'_> {
         const NL: &str = "FLTCON";
         self.present(NL);
         self.count(NL, "NMACH", f.mach.len().max(f.velocity.len()));
-        self.array(NL, "MACH", &f.mach);
-        self.array(NL, "VINF", &f.velocity);
-        self.array(NL, "RNNUB", &f.reynolds_per_length);
         // NALT as the deck had it (without it, LOOP=1 does not check it against NMACH).
         if f.nalt_given {
             self.count(NL, "NALT", f.altitude.len().max(f.pressure.len()));
         }
-        self.array(NL, "ALT", &f.altitude);
-        self.array(NL, "PINF", &f.pressure);
-        self.array(NL, "TINF", &f.temperature);
         self.count(NL, "NALPHA", f.alpha_deg.len());
-        self.array(NL, "ALSCHD", &f.alpha_deg);
+        for (var, v) in f.arrays() {
+            self.array(NL, var, v);
+        }
         let loop_mode = match f.loop_mode {
             Loop::Together => None,
             Loop::AltitudeOuter => Some(2.0),
             Loop::MachOuter => Some(3.0),
         };
         self.real(NL, "LOOP", loop_mode);
-        self.real(NL, "WT", f.weight);
-        self.real(NL, "GAMMA", f.gamma_deg);
+        for (var, v) in f.scalars() {
+            self.real(NL, var, v);
+        }
         self.real(NL, "TR", f.transition_strips.then_some(1.0));
-        self.real(NL, "STMACH", f.stmach);
-        self.real(NL, "TSMACH", f.tsmach);
         self.logical(NL, "HYPERS", f.hypersonic.then_some(true));
     }
 
     fn reference(&mut self) {
         const NL: &str = "OPTINS";
-        let r = &self.case.reference;
-        for (var, v) in [
-            ("SREF", r.area),
-            ("CBARR", r.chord),
-            ("BLREF", r.span),
-            ("ROUGFC", r.roughness),
-        ] {
+        for (var, v) in self.case.reference.scalars() {
             self.real(NL, var, v);
         }
     }
@@ -164,25 +153,8 @@ impl Namelists<'_> {
             return;
         };
         self.present(NL);
-        for (var, v) in [
-            ("XCG", s.xcg),
-            ("ZCG", s.zcg),
-            ("XW", s.xw),
-            ("ZW", s.zw),
-            ("ALIW", s.aliw_deg),
-            ("XH", s.xh),
-            ("ZH", s.zh),
-            ("ALIH", s.alih_deg),
-            ("XV", s.xv),
-            ("ZV", s.zv),
-            ("XVF", s.xvf),
-            ("ZVF", s.zvf),
-            ("YV", s.yv),
-            ("YF", s.yf),
-            ("PHIV", s.phiv_deg),
-            ("PHIF", s.phif_deg),
-            ("HINAX", s.hinax),
-        ] {
+        // SCALE below: the scale the case applies.
+        for (var, v) in s.scalars().filter(|(var, _)| *var != "SCALE") {
             self.real(NL, var, v);
         }
         // The scale the case applies ([`Case::scale`]), given where the case gives one.
@@ -199,49 +171,17 @@ impl Namelists<'_> {
         const NL: &str = "BODY";
         self.present(NL);
         self.count(NL, "NX", b.x.len());
-        for (var, v) in [
-            ("X", &b.x),
-            ("S", &b.s),
-            ("P", &b.p),
-            ("R", &b.r),
-            ("ZU", &b.zu),
-            ("ZL", &b.zl),
-        ] {
+        for (var, v) in b.arrays() {
             self.array(NL, var, v);
         }
-        for (var, v) in [
-            ("BNOSE", b.bnose),
-            ("BTAIL", b.btail),
-            ("BLN", b.bln),
-            ("BLA", b.bla),
-            ("DS", b.ds),
-            ("ITYPE", b.itype),
-            ("METHOD", b.method),
-            ("ELLIP", b.ellip),
-        ] {
+        for (var, v) in b.scalars() {
             self.real(NL, var, v);
         }
     }
 
     fn planform(&mut self, nl: &str, p: &Planform) {
         self.present(nl);
-        for (var, v) in [
-            ("CHRDR", p.chrdr),
-            ("CHRDBP", p.chrdbp),
-            ("CHRDTP", p.chrdtp),
-            ("SSPN", p.sspn),
-            ("SSPNE", p.sspne),
-            ("SSPNOP", p.sspnop),
-            ("SSPNDD", p.sspndd),
-            ("SAVSI", p.savsi_deg),
-            ("SAVSO", p.savso_deg),
-            ("CHSTAT", p.chstat),
-            ("TWISTA", p.twista_deg),
-            ("DHDADI", p.dhdadi_deg),
-            ("DHDADO", p.dhdado_deg),
-            ("TYPE", p.planform_type),
-            ("SWAFP", p.swafp_deg),
-        ] {
+        for (var, v) in p.scalars() {
             self.real(nl, var, v);
         }
     }
@@ -255,13 +195,7 @@ impl Namelists<'_> {
         if !s.scalars.contains_key("NPTS") {
             self.count(nl, "NPTS", s.xcord.len());
         }
-        for (var, v) in [
-            ("XCORD", &s.xcord),
-            ("YUPPER", &s.yupper),
-            ("YLOWER", &s.ylower),
-            ("MEAN", &s.mean),
-            ("THICK", &s.thick),
-        ] {
+        for (var, v) in s.arrays() {
             self.array(nl, var, v);
         }
         for (var, v) in &s.per_mach {
@@ -276,16 +210,7 @@ impl Namelists<'_> {
         };
         const NL: &str = "TVTPAN";
         self.present(NL);
-        for (var, v) in [
-            ("BVP", t.bvp),
-            ("BV", t.bv),
-            ("BDV", t.bdv),
-            ("BH", t.bh),
-            ("SV", t.sv),
-            ("VPHITE", t.vphite),
-            ("VLP", t.vlp),
-            ("ZP", t.zp),
-        ] {
+        for (var, v) in t.scalars() {
             self.real(NL, var, v);
         }
     }
@@ -296,27 +221,7 @@ impl Namelists<'_> {
         };
         const NL: &str = "LARWB";
         self.present(NL);
-        for (var, v) in [
-            ("SREF", l.sref),
-            ("L", l.length),
-            ("XCG", l.xcg),
-            ("ZB", l.zb),
-            ("DELTEP", l.deltep_deg),
-            ("SFRONT", l.sfront),
-            ("AR", l.aspect_ratio),
-            ("R3LEOB", l.r3leob),
-            ("DELTAL", l.deltal_deg),
-            ("SWET", l.swet),
-            ("PERBAS", l.perbas),
-            ("SBASE", l.sbase),
-            ("HB", l.hb),
-            ("BB", l.bb),
-            ("THETAD", l.thetad_deg),
-            ("SBS", l.sbs),
-            ("SBSLB", l.sbslb),
-            ("XCENSB", l.xcensb),
-            ("XCENW", l.xcenw),
-        ] {
+        for (var, v) in l.scalars() {
             self.real(NL, var, v);
         }
         self.logical(NL, "BLF", l.blf);
@@ -403,96 +308,260 @@ impl Case {
     /// read. The places are lines of that written deck.
     ///
     /// A value that is not a number cannot be written: each is an error naming its namelist,
-    /// variable and element (line 0), and the deck is read without it.
+    /// variable and element (line 0), and the deck is read without it. So is a finite value
+    /// too large for the deck's units (a length of 1e307 m in inches).
     pub fn diagnose(&self) -> Vec<crate::error::Diagnostic> {
         use crate::error::{DeckProblem, Diagnostic, Severity};
-        let mut raw = self.to_raw();
-        let mut found: Vec<Diagnostic> = without_values_not_numbers(&mut raw)
-            .into_iter()
-            .map(|v| Diagnostic {
-                severity: Severity::Error,
-                file: "case".into(),
-                line: 0,
-                column: 0,
-                card: Some(v.namelist.clone()),
-                variable: Some(v.variable.clone()),
-                problem: DeckProblem::Physical {
-                    message: format!("{}: not a number", v.assignment()),
-                },
-                hint: None,
-            })
+        let error = |v: &NotANumber, message: String| Diagnostic {
+            severity: Severity::Error,
+            file: "case".into(),
+            line: 0,
+            column: 0,
+            card: v.namelist.clone(),
+            variable: Some(v.variable.clone()),
+            problem: DeckProblem::Physical { message },
+            hint: None,
+        };
+        let own = self.values_not_numbers();
+        let mut found: Vec<Diagnostic> = own
+            .iter()
+            .map(|v| error(v, format!("{}: not a number", v.assignment())))
             .collect();
+        // The deck gives the scale the case applies; one that is not positive is taken as 1.
+        if self.scale.is_finite() && self.scale <= 0.0 {
+            let scale = NotANumber::scalar("SYNTHS", "SCALE", self.scale);
+            found.push(error(
+                &scale,
+                format!("{}: not positive, taken as 1", scale.assignment()),
+            ));
+        }
+        let mut raw = self.to_raw();
+        for v in without_values_not_numbers(&mut raw) {
+            let the_case_s = own
+                .iter()
+                .any(|o| o.namelist == v.namelist && o.variable == v.variable);
+            if !the_case_s {
+                found.push(error(
+                    &v,
+                    format!(
+                        "{}: too large for the deck's units, it cannot be written",
+                        v.assignment()
+                    ),
+                ));
+            }
+        }
         let text = crate::deck::writer::write_case(&raw);
         found.extend(crate::read_deck(&text, "case").diagnostics);
         found
     }
 
-    /// The values of this case that are not numbers (NaN or ±inf), by namelist and variable
-    /// as its deck ([`Case::to_raw`]) gives them; none for a case read from a deck.
+    /// The input values of this case that are not numbers (NaN or ±inf), by namelist,
+    /// variable and element as its deck gives them, with their values; none for a case read
+    /// from a deck.
     pub fn values_not_numbers(&self) -> Vec<NotANumber> {
         let Some(first) = super::finite::first_value_not_a_number(self) else {
             return Vec::new();
         };
-        let found = without_values_not_numbers(&mut self.to_raw());
+        let mut found = Vec::new();
+        self.each_value_not_a_number(|v| found.push(v));
         if found.is_empty() {
-            vec![NotANumber::outside_the_deck(first)]
-        } else {
-            found
+            // A field the lists below do not hold (none is known).
+            found.push(NotANumber::outside_the_deck(first));
+        }
+        found
+    }
+
+    /// Gives each input value that is not a number to `each`, namelist by namelist.
+    fn each_value_not_a_number(&self, mut each: impl FnMut(NotANumber)) {
+        let mut scalars = |nl: &str, values: &mut dyn Iterator<Item = (&str, Option<f64>)>| {
+            for (var, v) in values {
+                if let Some(bad) = v.filter(|x| !x.is_finite()) {
+                    each(NotANumber::scalar(nl, var, bad));
+                }
+            }
+        };
+        let f = self.flight.as_ref();
+        scalars("FLTCON", &mut f.into_iter().flat_map(|f| f.scalars()));
+        scalars("OPTINS", &mut self.reference.scalars());
+        let synthesis = self.synthesis.as_ref();
+        scalars(
+            "SYNTHS",
+            &mut synthesis.into_iter().flat_map(|s| s.scalars()),
+        );
+        scalars("SYNTHS", &mut std::iter::once(("SCALE", Some(self.scale))));
+        scalars("BODY", &mut self.body.iter().flat_map(|b| b.scalars()));
+        let planforms = [
+            &self.wing,
+            &self.horizontal_tail,
+            &self.vertical_tail,
+            &self.ventral_fin,
+        ];
+        for ((nl, _), p) in PLANFORMS.iter().zip(planforms) {
+            scalars(nl, &mut p.iter().flat_map(|p| p.scalars()));
+        }
+        scalars(
+            "TVTPAN",
+            &mut self.twin_panels.iter().flat_map(|t| t.scalars()),
+        );
+        scalars("LARWB", &mut self.larwb.iter().flat_map(|l| l.scalars()));
+        for (nl, surface) in SECTION_NAMELISTS {
+            let Some(s) = self.sections.get(surface.name()) else {
+                continue;
+            };
+            let given = s.scalars.iter().map(|(var, v)| (var.as_str(), Some(*v)));
+            scalars(nl, &mut given.collect::<Vec<_>>().into_iter());
+        }
+        // Arrays, element by element.
+        let mut arrays = |nl: &str, values: &mut dyn Iterator<Item = (&str, &[f64])>| {
+            for (var, v) in values {
+                for (k, &x) in v.iter().enumerate().filter(|(_, x)| !x.is_finite()) {
+                    each(NotANumber::element(nl, var, k, x));
+                }
+            }
+        };
+        arrays("FLTCON", &mut f.into_iter().flat_map(|f| f.arrays()));
+        arrays("BODY", &mut self.body.iter().flat_map(|b| b.arrays()));
+        for (nl, surface) in SECTION_NAMELISTS {
+            let Some(s) = self.sections.get(surface.name()) else {
+                continue;
+            };
+            arrays(nl, &mut s.arrays());
+            let per_mach = s
+                .per_mach
+                .iter()
+                .map(|(var, v)| (var.as_str(), v.as_slice()));
+            arrays(nl, &mut per_mach.collect::<Vec<_>>().into_iter());
+        }
+        // The namelists kept as read: a value alone is a scalar, as the deck gives it.
+        for (nl, values) in &self.other {
+            for (var, value) in values {
+                let Value::Numbers(v) = value else { continue };
+                for (k, x) in v.iter().enumerate() {
+                    let Some(bad) = x.filter(|x| !x.is_finite()) else {
+                        continue;
+                    };
+                    each(if v.len() == 1 {
+                        NotANumber::scalar(nl, var, bad)
+                    } else {
+                        NotANumber::element(nl, var, k, bad)
+                    });
+                }
+            }
         }
     }
 
-    /// This case as its deck would be read without its values that are not numbers, and
-    /// those values; `None` when it has none (always for a case read from a deck). The deck
-    /// is this case's [`Case::to_raw`] with each such value not given, as a deck's reader
-    /// leaves a number it cannot read; the reading rules, number and place are this case's.
-    /// Lengths go through the deck's units and back, so they can differ from this case's in
-    /// the last digit when its units are not metres.
-    pub fn without_values_not_numbers(&self) -> Option<(Case, Vec<NotANumber>)> {
-        let first = super::finite::first_value_not_a_number(self)?;
-        let mut raw = self.to_raw();
-        let mut found = without_values_not_numbers(&mut raw);
-        if found.is_empty() {
-            found.push(NotANumber::outside_the_deck(first));
+    /// This case without its optional values that are not numbers (NaN or ±inf, which no deck
+    /// can give), as a deck without them: each is not given. Those values are returned; none
+    /// when the case has none (always for a case read from a deck). An array's element that
+    /// is not a number is left in place: what reads the array refuses it and says so (a
+    /// flight condition, a body, a section's coordinates), as a value of a section's per-Mach
+    /// input that is not a number is not given for its Mach number.
+    pub(crate) fn without_scalars_not_numbers(&self) -> Option<(Case, Vec<NotANumber>)> {
+        super::finite::first_value_not_a_number(self)?;
+        let mut case = self.clone();
+        let mut found = Vec::new();
+        let mut take = |nl: &str, values: &mut dyn Iterator<Item = (&str, &mut Option<f64>)>| {
+            for (var, v) in values {
+                if let Some(bad) = v.filter(|x| !x.is_finite()) {
+                    *v = None;
+                    found.push(NotANumber::scalar(nl, var, bad));
+                }
+            }
+        };
+        if let Some(f) = case.flight.as_mut() {
+            take("FLTCON", &mut f.scalars_mut());
         }
-        let (read, _checks) = Case::from_raw(&raw, "case");
-        Some((
-            Case {
-                number: self.number,
-                first_line: self.first_line,
-                section_reynolds: self.section_reynolds,
-                five_digit: self.five_digit,
-                section_maximum: self.section_maximum,
-                six_a: self.six_a,
-                zero_lift: self.zero_lift,
-                forward_sweep: self.forward_sweep,
-                tail_slope: self.tail_slope,
-                outboard_section: self.outboard_section,
-                jorgensen_drag: self.jorgensen_drag,
-                ..read
-            },
-            found,
-        ))
+        take("OPTINS", &mut case.reference.scalars_mut());
+        if let Some(s) = case.synthesis.as_mut() {
+            take("SYNTHS", &mut s.scalars_mut());
+        }
+        if let Some(b) = case.body.as_mut() {
+            take("BODY", &mut b.scalars_mut());
+        }
+        let planforms = [
+            &mut case.wing,
+            &mut case.horizontal_tail,
+            &mut case.vertical_tail,
+            &mut case.ventral_fin,
+        ];
+        for ((nl, _), p) in PLANFORMS.iter().zip(planforms) {
+            if let Some(p) = p.as_mut() {
+                take(nl, &mut p.scalars_mut());
+            }
+        }
+        if let Some(t) = case.twin_panels.as_mut() {
+            take("TVTPAN", &mut t.scalars_mut());
+        }
+        if let Some(l) = case.larwb.as_mut() {
+            take("LARWB", &mut l.scalars_mut());
+        }
+        for (nl, surface) in SECTION_NAMELISTS {
+            if let Some(s) = case.sections.get_mut(surface.name()) {
+                s.scalars.retain(|var, v| {
+                    let keep = v.is_finite();
+                    if !keep {
+                        found.push(NotANumber::scalar(nl, var, *v));
+                    }
+                    keep
+                });
+            }
+        }
+        for (nl, values) in case.other.iter_mut() {
+            for (var, value) in values.iter_mut() {
+                let Value::Numbers(v) = value else { continue };
+                let alone = v.len() == 1;
+                for (k, x) in v.iter_mut().enumerate() {
+                    if let Some(bad) = x.filter(|x| !x.is_finite()) {
+                        *x = None;
+                        found.push(if alone {
+                            NotANumber::scalar(nl, var, bad)
+                        } else {
+                            NotANumber::element(nl, var, k, bad)
+                        });
+                    }
+                }
+            }
+        }
+        Some((case, found))
     }
 }
 
 /// A value of a case that is not a number, where its deck would give it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct NotANumber {
-    /// The namelist; empty for a field of the case that its deck has no place for (the
-    /// variable is then the field's path in the case, `synthesis.scale`).
-    pub namelist: String,
+    /// The namelist; none for a field of the case that its deck has no place for.
+    pub namelist: Option<String>,
+    /// The deck's variable name; for a field its deck has no place for, its path in the case
+    /// (`body.r[2]`, counted from 0 as in Rust).
     pub variable: String,
-    /// The element (from 1) of an array; none for a scalar.
+    /// The element (from 1, as the deck counts) of an array; none for a scalar.
     pub element: Option<usize>,
     pub value: f64,
 }
 
 impl NotANumber {
+    fn scalar(nl: &str, var: &str, value: f64) -> NotANumber {
+        NotANumber {
+            namelist: Some(nl.to_string()),
+            variable: var.to_string(),
+            element: None,
+            value,
+        }
+    }
+
+    /// Element `k` (from 0) of an array.
+    fn element(nl: &str, var: &str, k: usize, value: f64) -> NotANumber {
+        NotANumber {
+            element: Some(k + 1),
+            ..NotANumber::scalar(nl, var, value)
+        }
+    }
+
     /// The first value found by the walk of the case's fields, when the deck has no place
     /// for it.
     fn outside_the_deck((path, value): (String, f64)) -> NotANumber {
         NotANumber {
-            namelist: String::new(),
+            namelist: None,
             variable: path,
             element: None,
             value,
@@ -510,30 +579,29 @@ impl NotANumber {
 
 impl std::fmt::Display for NotANumber {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        if self.namelist.is_empty() {
-            write!(f, "{} (not in its deck)", self.assignment())
-        } else {
-            write!(f, "${} {}", self.namelist, self.assignment())
+        match &self.namelist {
+            Some(nl) => write!(f, "${nl} {}", self.assignment()),
+            None => write!(f, "{} (not in its deck)", self.assignment()),
         }
     }
 }
 
 /// Takes every value that is not a number out of `raw`'s namelists (not given, as a deck's
-/// reader leaves a number it cannot read) and returns them, in the namelists' order.
+/// reader leaves a number it cannot read) and returns them, in the namelists' order: the
+/// case's own, and finite values that overflow in the deck's units.
 fn without_values_not_numbers(raw: &mut RawCase) -> Vec<NotANumber> {
     let mut found = Vec::new();
     for (nl, values) in &mut raw.namelists {
         for (var, value) in values.iter_mut() {
             let Value::Numbers(v) = value else { continue };
-            let scalar = v.len() == 1;
-            for (i, x) in v.iter_mut().enumerate() {
+            let alone = v.len() == 1;
+            for (k, x) in v.iter_mut().enumerate() {
                 if let Some(bad) = x.filter(|x| !x.is_finite()) {
                     *x = None;
-                    found.push(NotANumber {
-                        namelist: nl.clone(),
-                        variable: var.clone(),
-                        element: (!scalar).then_some(i + 1),
-                        value: bad,
+                    found.push(if alone {
+                        NotANumber::scalar(nl, var, bad)
+                    } else {
+                        NotANumber::element(nl, var, k, bad)
                     });
                 }
             }

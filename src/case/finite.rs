@@ -27,15 +27,15 @@ pub(super) fn first_value_not_a_number(case: &Case) -> Option<(String, f64)> {
 /// Why the walk stopped: a value that is not a number (the only "error"), and where, written
 /// as the walk returns through the fields that hold it.
 #[derive(Debug)]
-struct NotANumber {
+struct Found {
     value: f64,
     /// None at the value itself; the field path above it as it is returned.
     path: Option<String>,
 }
 
-impl NotANumber {
+impl Found {
     /// The same value, one field further out (`.name`, `[index]`, `{entry}`).
-    fn inside(self, step: std::fmt::Arguments) -> NotANumber {
+    fn inside(self, step: std::fmt::Arguments) -> Found {
         let path = match self.path {
             Some(below) if below.starts_with('[') || below.starts_with('{') => {
                 format!("{step}{below}")
@@ -43,26 +43,28 @@ impl NotANumber {
             Some(below) => format!("{step}.{below}"),
             None => step.to_string(),
         };
-        NotANumber {
+        Found {
             value: self.value,
             path: Some(path),
         }
     }
 }
 
-impl std::fmt::Display for NotANumber {
+impl std::fmt::Display for Found {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{} = {}", self.path.as_deref().unwrap_or(""), self.value)
     }
 }
 
-impl std::error::Error for NotANumber {}
+impl std::error::Error for Found {}
 
-impl ser::Error for NotANumber {
-    fn custom<T: std::fmt::Display>(_: T) -> Self {
-        NotANumber {
+impl ser::Error for Found {
+    /// A structure that cannot be walked (none of the case's: they all serialize) is taken
+    /// as holding a value that is not a number, so that it is looked at.
+    fn custom<T: std::fmt::Display>(why: T) -> Self {
+        Found {
             value: f64::NAN,
-            path: None,
+            path: Some(format!("(not walked: {why})")),
         }
     }
 }
@@ -94,13 +96,13 @@ impl Members {
     }
 }
 
-type Walked = Result<(), NotANumber>;
+type Walked = Result<(), Found>;
 
 fn finite(v: f64) -> Walked {
     if v.is_finite() {
         Ok(())
     } else {
-        Err(NotANumber {
+        Err(Found {
             value: v,
             path: None,
         })
@@ -114,7 +116,7 @@ const NOTHING: Members = Members {
 
 impl Serializer for Finder {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     type SerializeSeq = Members;
     type SerializeTuple = Members;
     type SerializeTupleStruct = Members;
@@ -192,13 +194,13 @@ impl Serializer for Finder {
     ) -> Walked {
         value.serialize(self)
     }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Members, NotANumber> {
+    fn serialize_seq(self, _: Option<usize>) -> Result<Members, Found> {
         Ok(NOTHING)
     }
-    fn serialize_tuple(self, _: usize) -> Result<Members, NotANumber> {
+    fn serialize_tuple(self, _: usize) -> Result<Members, Found> {
         Ok(NOTHING)
     }
-    fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Members, NotANumber> {
+    fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Members, Found> {
         Ok(NOTHING)
     }
     fn serialize_tuple_variant(
@@ -207,13 +209,13 @@ impl Serializer for Finder {
         _: u32,
         _: &'static str,
         _: usize,
-    ) -> Result<Members, NotANumber> {
+    ) -> Result<Members, Found> {
         Ok(NOTHING)
     }
-    fn serialize_map(self, _: Option<usize>) -> Result<Members, NotANumber> {
+    fn serialize_map(self, _: Option<usize>) -> Result<Members, Found> {
         Ok(NOTHING)
     }
-    fn serialize_struct(self, name: &'static str, _: usize) -> Result<Members, NotANumber> {
+    fn serialize_struct(self, name: &'static str, _: usize) -> Result<Members, Found> {
         Ok(if name == "Case" {
             Members {
                 skip: &DERIVED_FIELDS,
@@ -229,14 +231,14 @@ impl Serializer for Finder {
         _: u32,
         _: &'static str,
         _: usize,
-    ) -> Result<Members, NotANumber> {
+    ) -> Result<Members, Found> {
         Ok(NOTHING)
     }
 }
 
 impl ser::SerializeSeq for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
         self.element(value, true)
     }
@@ -247,7 +249,7 @@ impl ser::SerializeSeq for Members {
 
 impl ser::SerializeTuple for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
         self.element(value, true)
     }
@@ -258,7 +260,7 @@ impl ser::SerializeTuple for Members {
 
 impl ser::SerializeTupleStruct for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
         self.element(value, true)
     }
@@ -269,7 +271,7 @@ impl ser::SerializeTupleStruct for Members {
 
 impl ser::SerializeTupleVariant for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
         self.element(value, true)
     }
@@ -280,7 +282,7 @@ impl ser::SerializeTupleVariant for Members {
 
 impl ser::SerializeMap for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_key<T: ?Sized + Serialize>(&mut self, key: &T) -> Walked {
         key.serialize(Finder)
     }
@@ -294,7 +296,7 @@ impl ser::SerializeMap for Members {
 
 impl ser::SerializeStruct for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, key: &'static str, value: &T) -> Walked {
         if self.skip.contains(&key) {
             return Ok(());
@@ -310,7 +312,7 @@ impl ser::SerializeStruct for Members {
 
 impl ser::SerializeStructVariant for Members {
     type Ok = ();
-    type Error = NotANumber;
+    type Error = Found;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, key: &'static str, value: &T) -> Walked {
         value
             .serialize(Finder)

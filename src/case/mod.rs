@@ -9,6 +9,7 @@
 
 mod deck_form;
 mod finite;
+mod scalars;
 pub mod units;
 
 pub use deck_form::NotANumber;

@@ -4,6 +4,7 @@
 
 use super::{CoordinateRow, SectionCoordinates, SectionError};
 use crate::case::SectionInput;
+use crate::charts::Query;
 use crate::methods::section::SHORTEST_TRAILING_EDGE;
 
 /// A section needs the leading edge, the trailing edge and a point between.
@@ -55,7 +56,8 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
         })
         .collect();
     // Stations a few units of f64's least value apart pass the increasing test, but the mean
-    // line's slope through them, or the surfaces laid off along it, are not numbers.
+    // line's slope through them, or the surfaces laid off along it, are not numbers (found by
+    // fuzzing the library: XCORD 5e-324 apart).
     if let Some(i) = rows
         .iter()
         .position(|r| r.values().iter().any(|v| !v.is_finite()))
@@ -63,10 +65,10 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
         return Err(problem(
             "XCORD",
             format!(
-                "XCORD({}) = {:e}: the stations beside it are too close together for the mean \
+                "XCORD({}) = {}: the stations beside it are too close together for the mean \
                  line's slope there to be a number",
                 i + 1,
-                x[i]
+                Query(x[i])
             ),
         ));
     }
@@ -75,9 +77,9 @@ pub fn user_defined(input: &SectionInput) -> Result<SectionCoordinates, SectionE
         return Err(problem(
             "XCORD",
             format!(
-                "XCORD(2) = {:e}: too close to the leading edge for the leading-edge radius \
+                "XCORD(2) = {}: too close to the leading edge for the leading-edge radius \
                  (x² + y_t²)/(2x) to be a number; give LERI",
-                x[1]
+                Query(x[1])
             ),
         ));
     }
@@ -245,6 +247,22 @@ fn mean_and_half(
             .unzip(),
         Ordinates::MeanAndThickness => first.iter().zip(second).map(|(c, t)| (*c, 0.5 * t)).unzip(),
     };
+    // Ordinates whose half sum or half difference overflows (±1e308) are not a section.
+    let names = match kind {
+        Ordinates::Surfaces => ("YUPPER", "YLOWER"),
+        Ordinates::MeanAndThickness => ("MEAN", "THICK"),
+    };
+    if let Some(i) = (0..n).find(|&i| !(mean[i].is_finite() && half[i].is_finite())) {
+        return Err(problem(
+            names.0,
+            format!(
+                "value {}: {} and {} there give no mean line or thickness that is a number",
+                i + 1,
+                names.0,
+                names.1
+            ),
+        ));
+    }
     if let Some(i) = (1..n - 1).find(|&i| half[i] < 0.0) {
         let what = match kind {
             Ordinates::Surfaces => ("YUPPER", "lies below YLOWER"),
@@ -362,6 +380,11 @@ mod tests {
                     &[0.0, -0.02, -0.05, 0.0],
                 ),
                 "XCORD(2) = 1e-313: too close to the leading edge",
+            ),
+            // Found by review: ordinates that overflow were blamed on the stations.
+            (
+                input(1.0, &x, &[0.0, 1e308, 0.0], &[0.0, -1e308, 0.0]),
+                "YUPPER: value 2: YUPPER and YLOWER there give no mean line or thickness",
             ),
         ];
         for (s, why) in cases {
