@@ -610,3 +610,21 @@ fn an_array_element_that_is_not_a_number_is_refused_where_it_is_read() {
         .collect();
     assert_eq!(listed, ["$FLTCON MACH(1) = NaN", "$BODY R(3) = NaN"]);
 }
+
+/// Fuzzing the library found a tiny positive value (1e-323) in a case with feet as units
+/// panicking in the deck writer of a debug build, where it looked for the floats next to the
+/// value in the deck's units below the least positive float.
+#[test]
+fn a_tiny_value_is_written_in_other_units() {
+    let mut case = build_case::example_uav();
+    case.dim = datcom::deck::cards::Dim::Ft;
+    let f = case.flight.as_mut().unwrap();
+    f.reynolds_per_length = vec![1e-323; f.mach.len()];
+    let raw = case.to_raw();
+    let written = raw.namelists["FLTCON"]["RNNUB"].numbers().unwrap()[0];
+    assert!(
+        written.is_some_and(|r| (0.0..1e-300).contains(&r)),
+        "{written:?}"
+    );
+    case.diagnose();
+}

@@ -4,6 +4,7 @@
 
 use std::collections::BTreeMap;
 
+use super::scalars::NamedScalars;
 use super::{units, Case, Loop, Planform, SectionInput, PLANFORMS, SECTION_NAMELISTS};
 use crate::deck::cards::{DerivUnit, Dim};
 use crate::deck::schema::{self, Dimension};
@@ -18,7 +19,11 @@ fn neighbours(x: f64) -> impl Iterator<Item = f64> {
     let finite = x.is_finite() && x != 0.0;
     (1..=NEIGHBOURS)
         .filter(move |_| finite)
-        .flat_map(move |k| [f64::from_bits(bits + k), f64::from_bits(bits - k)])
+        // Below the least positive float the bits run out (found by fuzzing the library: a
+        // value of 1e-323 in feet panicked in a debug build).
+        .flat_map(move |k| [bits.checked_add(k), bits.checked_sub(k)])
+        .flatten()
+        .map(f64::from_bits)
         .filter(|v| v.is_finite())
 }
 
@@ -336,7 +341,7 @@ impl Case {
             ));
         }
         let mut raw = self.to_raw();
-        for v in without_values_not_numbers(&mut raw) {
+        for v in without_values_not_numbers(&mut raw.namelists) {
             let the_case_s = own
                 .iter()
                 .any(|o| o.namelist == v.namelist && o.variable == v.variable);
@@ -432,21 +437,9 @@ impl Case {
                 .map(|(var, v)| (var.as_str(), v.as_slice()));
             arrays(nl, &mut per_mach.collect::<Vec<_>>().into_iter());
         }
-        // The namelists kept as read: a value alone is a scalar, as the deck gives it.
-        for (nl, values) in &self.other {
-            for (var, value) in values {
-                let Value::Numbers(v) = value else { continue };
-                for (k, x) in v.iter().enumerate() {
-                    let Some(bad) = x.filter(|x| !x.is_finite()) else {
-                        continue;
-                    };
-                    each(if v.len() == 1 {
-                        NotANumber::scalar(nl, var, bad)
-                    } else {
-                        NotANumber::element(nl, var, k, bad)
-                    });
-                }
-            }
+        // The namelists kept as read (found only on a copy: the case is left as it is).
+        for v in without_values_not_numbers(&mut self.other.clone()) {
+            each(v);
         }
     }
 
@@ -506,22 +499,7 @@ impl Case {
                 });
             }
         }
-        for (nl, values) in case.other.iter_mut() {
-            for (var, value) in values.iter_mut() {
-                let Value::Numbers(v) = value else { continue };
-                let alone = v.len() == 1;
-                for (k, x) in v.iter_mut().enumerate() {
-                    if let Some(bad) = x.filter(|x| !x.is_finite()) {
-                        *x = None;
-                        found.push(if alone {
-                            NotANumber::scalar(nl, var, bad)
-                        } else {
-                            NotANumber::element(nl, var, k, bad)
-                        });
-                    }
-                }
-            }
-        }
+        found.extend(without_values_not_numbers(&mut case.other));
         Some((case, found))
     }
 }
@@ -586,12 +564,12 @@ impl std::fmt::Display for NotANumber {
     }
 }
 
-/// Takes every value that is not a number out of `raw`'s namelists (not given, as a deck's
-/// reader leaves a number it cannot read) and returns them, in the namelists' order: the
-/// case's own, and finite values that overflow in the deck's units.
-fn without_values_not_numbers(raw: &mut RawCase) -> Vec<NotANumber> {
+/// Takes every value that is not a number out of `namelists` (not given, as a deck's reader
+/// leaves a number it cannot read) and returns them, in the namelists' order; a value alone
+/// is named as a scalar, as a deck gives it.
+fn without_values_not_numbers(namelists: &mut BTreeMap<String, NamelistValues>) -> Vec<NotANumber> {
     let mut found = Vec::new();
-    for (nl, values) in &mut raw.namelists {
+    for (nl, values) in namelists {
         for (var, value) in values.iter_mut() {
             let Value::Numbers(v) = value else { continue };
             let alone = v.len() == 1;

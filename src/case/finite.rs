@@ -82,6 +82,13 @@ struct Members {
 }
 
 impl Members {
+    /// Walks a named field, naming it when the value is not a number.
+    fn field<T: ?Sized + Serialize>(key: &'static str, value: &T) -> Walked {
+        value
+            .serialize(Finder)
+            .map_err(|e| e.inside(format_args!("{key}")))
+    }
+
     /// Walks the next member, naming it by its place when the value is not a number.
     fn element<T: ?Sized + Serialize>(&mut self, value: &T, brackets: bool) -> Walked {
         let k = self.count;
@@ -114,6 +121,15 @@ const NOTHING: Members = Members {
     count: 0,
 };
 
+/// Serializer methods for values that hold no number: nothing to check.
+macro_rules! ignored {
+    ($($method:ident: $ty:ty),* $(,)?) => {$(
+        fn $method(self, _: $ty) -> Walked {
+            Ok(())
+        }
+    )*};
+}
+
 impl Serializer for Finder {
     type Ok = ();
     type Error = Found;
@@ -131,42 +147,20 @@ impl Serializer for Finder {
     fn serialize_f32(self, v: f32) -> Walked {
         finite(f64::from(v))
     }
-    fn serialize_bool(self, _: bool) -> Walked {
-        Ok(())
-    }
-    fn serialize_i8(self, _: i8) -> Walked {
-        Ok(())
-    }
-    fn serialize_i16(self, _: i16) -> Walked {
-        Ok(())
-    }
-    fn serialize_i32(self, _: i32) -> Walked {
-        Ok(())
-    }
-    fn serialize_i64(self, _: i64) -> Walked {
-        Ok(())
-    }
-    fn serialize_u8(self, _: u8) -> Walked {
-        Ok(())
-    }
-    fn serialize_u16(self, _: u16) -> Walked {
-        Ok(())
-    }
-    fn serialize_u32(self, _: u32) -> Walked {
-        Ok(())
-    }
-    fn serialize_u64(self, _: u64) -> Walked {
-        Ok(())
-    }
-    fn serialize_char(self, _: char) -> Walked {
-        Ok(())
-    }
-    fn serialize_str(self, _: &str) -> Walked {
-        Ok(())
-    }
-    fn serialize_bytes(self, _: &[u8]) -> Walked {
-        Ok(())
-    }
+    ignored!(
+        serialize_bool: bool,
+        serialize_i8: i8,
+        serialize_i16: i16,
+        serialize_i32: i32,
+        serialize_i64: i64,
+        serialize_u8: u8,
+        serialize_u16: u16,
+        serialize_u32: u32,
+        serialize_u64: u64,
+        serialize_char: char,
+        serialize_str: &str,
+        serialize_bytes: &[u8],
+    );
     fn serialize_none(self) -> Walked {
         Ok(())
     }
@@ -236,49 +230,29 @@ impl Serializer for Finder {
     }
 }
 
-impl ser::SerializeSeq for Members {
-    type Ok = ();
-    type Error = Found;
-    fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        self.element(value, true)
-    }
-    fn end(self) -> Walked {
-        Ok(())
-    }
+/// The members of a sequence, a tuple and a tuple struct or variant: walked in order, named
+/// by their place.
+macro_rules! elements {
+    ($($trait:ident :: $method:ident),*) => {$(
+        impl ser::$trait for Members {
+            type Ok = ();
+            type Error = Found;
+            fn $method<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
+                self.element(value, true)
+            }
+            fn end(self) -> Walked {
+                Ok(())
+            }
+        }
+    )*};
 }
 
-impl ser::SerializeTuple for Members {
-    type Ok = ();
-    type Error = Found;
-    fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        self.element(value, true)
-    }
-    fn end(self) -> Walked {
-        Ok(())
-    }
-}
-
-impl ser::SerializeTupleStruct for Members {
-    type Ok = ();
-    type Error = Found;
-    fn serialize_field<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        self.element(value, true)
-    }
-    fn end(self) -> Walked {
-        Ok(())
-    }
-}
-
-impl ser::SerializeTupleVariant for Members {
-    type Ok = ();
-    type Error = Found;
-    fn serialize_field<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
-        self.element(value, true)
-    }
-    fn end(self) -> Walked {
-        Ok(())
-    }
-}
+elements!(
+    SerializeSeq::serialize_element,
+    SerializeTuple::serialize_element,
+    SerializeTupleStruct::serialize_field,
+    SerializeTupleVariant::serialize_field
+);
 
 impl ser::SerializeMap for Members {
     type Ok = ();
@@ -301,9 +275,7 @@ impl ser::SerializeStruct for Members {
         if self.skip.contains(&key) {
             return Ok(());
         }
-        value
-            .serialize(Finder)
-            .map_err(|e| e.inside(format_args!("{key}")))
+        Members::field(key, value)
     }
     fn end(self) -> Walked {
         Ok(())
@@ -314,9 +286,7 @@ impl ser::SerializeStructVariant for Members {
     type Ok = ();
     type Error = Found;
     fn serialize_field<T: ?Sized + Serialize>(&mut self, key: &'static str, value: &T) -> Walked {
-        value
-            .serialize(Finder)
-            .map_err(|e| e.inside(format_args!("{key}")))
+        Members::field(key, value)
     }
     fn end(self) -> Walked {
         Ok(())

@@ -46,20 +46,23 @@ named_arrays!(SectionInput {
     thick => "THICK",
 });
 
-/// Writes, for a structure, `scalars` (each optional number with its deck variable name) and
-/// `scalars_mut` (the same, to edit), from one list.
+/// A structure's optional numbers by their deck variable names.
+pub(crate) trait NamedScalars {
+    /// Each optional number with its deck variable name.
+    fn scalars(&self) -> impl Iterator<Item = (&'static str, Option<f64>)>;
+    /// [`NamedScalars::scalars`], to edit.
+    fn scalars_mut(&mut self) -> impl Iterator<Item = (&'static str, &mut Option<f64>)>;
+}
+
+/// Writes a structure's [`NamedScalars`] from one list.
 macro_rules! named_scalars {
     ($ty:ty { $($field:ident => $name:literal),* $(,)? }) => {
-        impl $ty {
-            /// Each optional number with its deck variable name.
-            pub(crate) fn scalars(&self) -> impl Iterator<Item = (&'static str, Option<f64>)> {
+        impl NamedScalars for $ty {
+            fn scalars(&self) -> impl Iterator<Item = (&'static str, Option<f64>)> {
                 [$(($name, self.$field)),*].into_iter()
             }
 
-            /// [`Self::scalars`], to edit.
-            pub(crate) fn scalars_mut(
-                &mut self,
-            ) -> impl Iterator<Item = (&'static str, &mut Option<f64>)> {
+            fn scalars_mut(&mut self) -> impl Iterator<Item = (&'static str, &mut Option<f64>)> {
                 [$(($name, &mut self.$field)),*].into_iter()
             }
         }
@@ -170,63 +173,32 @@ mod tests {
 
     /// Every optional number of a structure is in its list: with each listed one set, the
     /// structure serializes with no number missing (a field added later and not listed would
-    /// stay null).
+    /// stay null). `others` are its optional values that are not numbers.
+    fn all_listed<T: NamedScalars + Default + serde::Serialize>(others: &[&str]) {
+        let mut value = T::default();
+        for (_, v) in value.scalars_mut() {
+            *v = Some(1.0);
+        }
+        let json = serde_json::to_value(&value).unwrap();
+        let unset: Vec<&String> = json
+            .as_object()
+            .unwrap()
+            .iter()
+            .filter(|(k, v)| v.is_null() && !others.contains(&k.as_str()))
+            .map(|(k, _)| k)
+            .collect();
+        assert!(unset.is_empty(), "not listed: {unset:?}");
+    }
+
     #[test]
     fn every_optional_number_is_listed() {
-        fn check<T: serde::Serialize>(
-            nl: &str,
-            mut value: T,
-            set: impl Fn(&mut T),
-            not_numbers: &[&str],
-        ) {
-            set(&mut value);
-            let json = serde_json::to_value(&value).unwrap();
-            let unset: Vec<&String> = json
-                .as_object()
-                .unwrap()
-                .iter()
-                .filter(|(k, v)| v.is_null() && !not_numbers.contains(&k.as_str()))
-                .map(|(k, _)| k)
-                .collect();
-            assert!(unset.is_empty(), "{nl}: not listed: {unset:?}");
-        }
-        fn all<'a>(it: impl Iterator<Item = (&'static str, &'a mut Option<f64>)>) {
-            for (_, v) in it {
-                *v = Some(1.0);
-            }
-        }
-        check(
-            "FLTCON",
-            FlightInput::default(),
-            |s| all(s.scalars_mut()),
-            &[],
-        );
-        check(
-            "OPTINS",
-            Reference::default(),
-            |s| all(s.scalars_mut()),
-            &[],
-        );
-        check(
-            "SYNTHS",
-            Synthesis::default(),
-            |s| all(s.scalars_mut()),
-            &[],
-        );
-        check("BODY", Body::default(), |s| all(s.scalars_mut()), &[]);
-        check("WGPLNF", Planform::default(), |s| all(s.scalars_mut()), &[]);
-        check(
-            "TVTPAN",
-            TwinPanels::default(),
-            |s| all(s.scalars_mut()),
-            &[],
-        );
-        check(
-            "LARWB",
-            LowAspectRatioWingBody::default(),
-            |s| all(s.scalars_mut()),
-            &["blf", "roundn"],
-        );
+        all_listed::<FlightInput>(&[]);
+        all_listed::<Reference>(&[]);
+        all_listed::<Synthesis>(&[]);
+        all_listed::<Body>(&[]);
+        all_listed::<Planform>(&[]);
+        all_listed::<TwinPanels>(&[]);
+        all_listed::<LowAspectRatioWingBody>(&["blf", "roundn"]);
     }
 
     /// Every array of numbers of a structure is in its list: the structures' arrays that are
