@@ -1228,24 +1228,30 @@ pub fn run_case(case: &Case) -> CaseResults {
         results.warnings.insert(0, said);
         return results;
     }
-    if let Some((fixed, found)) = case.without_scalars_not_numbers() {
-        let mut results = run_scalars_given(&fixed);
-        if let Some(said) = not_numbers_said(&found) {
-            results.warnings.insert(0, Warning::text(said));
-        }
+    if let Some(taken) = case.without_scalars_not_numbers() {
+        let mut results = run_scalars_given(&taken.case);
+        let said = [
+            (taken.not_given, "not given"),
+            (taken.left, "kept in place, refused where it is read"),
+        ];
+        let warnings = said
+            .iter()
+            .filter_map(|(found, what)| not_numbers_said(found, what))
+            .map(Warning::text);
+        results.warnings.splice(0..0, warnings);
         return results;
     }
     run_scalars_given(case)
 }
 
-/// What a warning says of a case's values that are not numbers, taken out as not given.
-fn not_numbers_said(found: &[crate::case::NotANumber]) -> Option<String> {
+/// What a warning says of a case's values that are not numbers, and `what` becomes of them.
+fn not_numbers_said(found: &[crate::case::NotANumber], what: &str) -> Option<String> {
     let named: Vec<String> = found.iter().map(ToString::to_string).collect();
     match named.as_slice() {
         [] => None,
-        [one] => Some(format!("the case's {one} is not a number: not given")),
+        [one] => Some(format!("the case's {one} is not a number: {what}")),
         many => Some(format!(
-            "the case's {} are not numbers: not given",
+            "the case's {} are not numbers: {what}",
             many.join(", ")
         )),
     }

@@ -597,6 +597,23 @@ fn an_array_element_that_is_not_a_number_is_refused_where_it_is_read() {
         &body,
         "body geometry: R(3) = NaN (SI): must be finite"
     ));
+    // The run names an element even where nothing reads it (a velocity beside Mach numbers;
+    // found by fuzzing: the run said nothing while `check` gave an error).
+    for (r, named) in [
+        (&mach, "$FLTCON MACH(1) = NaN"),
+        (&body, "$BODY R(3) = NaN"),
+    ] {
+        let said =
+            format!("the case's {named} is not a number: kept in place, refused where it is read");
+        assert!(says(r, &said), "{said}: {:?}", r.warnings);
+    }
+    let velocity =
+        run(&|c: &mut datcom::Case| c.flight.as_mut().unwrap().velocity = vec![f64::NAN]);
+    assert_eq!(velocity.conditions, plain.conditions);
+    assert!(says(
+        &velocity,
+        "the case's $FLTCON VINF(1) = NaN is not a number: kept in place"
+    ));
     for r in [&mach, &body] {
         assert_eq!(not_numbers_in(&format!("{:?}", r.conditions)), 0);
     }

@@ -444,12 +444,13 @@ impl Case {
     }
 
     /// This case without its optional values that are not numbers (NaN or ±inf, which no deck
-    /// can give), as a deck without them: each is not given. Those values are returned; none
-    /// when the case has none (always for a case read from a deck). An array's element that
-    /// is not a number is left in place: what reads the array refuses it and says so (a
-    /// flight condition, a body, a section's coordinates), as a value of a section's per-Mach
-    /// input that is not a number is not given for its Mach number.
-    pub(crate) fn without_scalars_not_numbers(&self) -> Option<(Case, Vec<NotANumber>)> {
+    /// can give), as a deck without them: each is not given. Those values are returned, and
+    /// then those left in place; none when the case has none (always for a case read from a
+    /// deck). An array's element that is not a number is left in place: what reads the array
+    /// refuses it and says so (a flight condition, a body, a section's coordinates), as a
+    /// value of a section's per-Mach input that is not a number is not given for its Mach
+    /// number.
+    pub(crate) fn without_scalars_not_numbers(&self) -> Option<NotNumbersTakenOut> {
         super::finite::first_value_not_a_number(self)?;
         let mut case = self.clone();
         let mut found = Vec::new();
@@ -500,8 +501,23 @@ impl Case {
             }
         }
         found.extend(without_values_not_numbers(&mut case.other));
-        Some((case, found))
+        let left = case.values_not_numbers();
+        Some(NotNumbersTakenOut {
+            case,
+            not_given: found,
+            left,
+        })
     }
+}
+
+/// A case without its optional values that are not numbers
+/// ([`Case::without_scalars_not_numbers`]).
+pub(crate) struct NotNumbersTakenOut {
+    pub case: Case,
+    /// The values taken out: not given.
+    pub not_given: Vec<NotANumber>,
+    /// The values left in place: the elements of arrays, refused where they are read.
+    pub left: Vec<NotANumber>,
 }
 
 /// A value of a case that is not a number, where its deck would give it.
