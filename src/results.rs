@@ -1220,8 +1220,8 @@ fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
 /// gives, with a warning. So is a case whose scale is not a positive number (taken as 1). An
 /// optional input value that is not a number (NaN or ±inf, which no deck can give: a
 /// reference area, a chord station, a position) is not given, with a warning naming each; an
-/// element of an array that is not a number is refused by what reads it, which says so (a
-/// flight condition, a body, a section's coordinates).
+/// element of an array that is not a number is kept in place, named by a warning, and refused
+/// by what reads it, which says so (a flight condition, a body, a section's coordinates).
 pub fn run_case(case: &Case) -> CaseResults {
     if let Some((fixed, said)) = with_a_scale_that_is_a_number(case) {
         let mut results = run_case(&fixed);
