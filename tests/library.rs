@@ -630,7 +630,9 @@ fn an_array_element_that_is_not_a_number_is_refused_where_it_is_read() {
 
 /// Fuzzing the library found a tiny positive value (1e-323) in a case with feet as units
 /// panicking in the deck writer of a debug build, where it looked for the floats next to the
-/// value in the deck's units below the least positive float.
+/// value in the deck's units below the least positive float. The panic was an overflow check:
+/// this test fails without the fix in a debug build (`cargo test`, as CI runs it), not with
+/// `--release`, where the subtraction wrapped to a NaN that was filtered out.
 #[test]
 fn a_tiny_value_is_written_in_other_units() {
     let mut case = build_case::example_uav();

@@ -158,7 +158,6 @@ impl Namelists<'_> {
             return;
         };
         self.present(NL);
-        // SCALE below: the scale the case applies.
         for (var, v) in s.scalars().filter(|(var, _)| *var != "SCALE") {
             self.real(NL, var, v);
         }
