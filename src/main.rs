@@ -16,7 +16,10 @@ use datcom::Diagnosed;
     version,
     about = "USAF Digital DATCOM stability and control derivatives",
     long_about = "Reads Digital DATCOM input decks (namelists and control cards), checks them, \
-                  and computes flight conditions and (as methods arrive) aerodynamic coefficients."
+                  and computes the static longitudinal, static lateral-directional and dynamic \
+                  derivatives by the USAF DATCOM methods, component by component (body, wing, \
+                  wing-body, tails, downwash), as text, a listing in the original's layout \
+                  (for006), JSON or CSV."
 )]
 struct Cli {
     #[command(subcommand)]
