@@ -182,6 +182,53 @@ pub struct ReferenceDimensions {
     pub zcg: f64,
 }
 
+/// [`ReferenceDimensions`] in a deck's units, the geometry divided back by the case's scale.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReferenceInDeckUnits {
+    pub area: Option<f64>,
+    /// The longitudinal reference length (the chord).
+    pub chord: Option<f64>,
+    /// The lateral reference length (the span).
+    pub span: Option<f64>,
+    pub xcg: f64,
+    pub zcg: f64,
+}
+
+impl ReferenceDimensions {
+    /// The dimensions in the units `dim` of a deck, divided back by `scale` (SCALE: the
+    /// geometry is held scaled, the reference dimensions are reported as the deck gives them).
+    pub fn in_deck_units(&self, dim: Dim, scale: f64) -> ReferenceInDeckUnits {
+        use crate::case::units::from_si;
+        use crate::deck::schema::Dimension;
+        let len = |v: f64| from_si(v, dim, Dimension::Length) / scale;
+        ReferenceInDeckUnits {
+            area: self
+                .area
+                .map(|a| from_si(a, dim, Dimension::Area) / (scale * scale)),
+            chord: self.chord.map(len),
+            span: self.span.map(len),
+            xcg: len(self.xcg),
+            zcg: len(self.zcg),
+        }
+    }
+}
+
+impl ReferenceInDeckUnits {
+    /// Whether every value given is a number.
+    fn is_finite(&self) -> bool {
+        [
+            self.area,
+            self.chord,
+            self.span,
+            Some(self.xcg),
+            Some(self.zcg),
+        ]
+        .into_iter()
+        .flatten()
+        .all(f64::is_finite)
+    }
+}
+
 /// One flight condition's results.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConditionResults {
@@ -1194,19 +1241,33 @@ fn reference(case: &Case) -> ReferenceDimensions {
     }
 }
 
-/// A case whose scale is not a positive number: the same case with a scale of 1, and the
-/// warning that says so.
-fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
-    if case.scale.is_finite() && case.scale > 0.0 {
+/// Why a case's scale cannot be used, if it cannot: it is not a positive number, or it is so
+/// small that the reference dimensions divided back by it overflow in the deck's units. Such
+/// a scale is taken as 1.
+pub(crate) fn why_the_scale_is_not_used(case: &Case) -> Option<&'static str> {
+    if case.scale == 1.0 {
         return None;
     }
+    if !(case.scale.is_finite() && case.scale > 0.0) {
+        return Some("is not a positive number");
+    }
+    let reported = reference(case).in_deck_units(case.dim, case.scale);
+    (!reported.is_finite()).then_some(
+        "is so small that the reference dimensions divided by it overflow in the deck's units",
+    )
+}
+
+/// A case whose scale cannot be used ([`why_the_scale_is_not_used`]): the same case with a
+/// scale of 1, and the warning that says so.
+fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
+    let why = why_the_scale_is_not_used(case)?;
     // The case's geometry is already scaled; SCALE only turns the reference dimensions back
     // into the deck's.
     let mut fixed = case.clone();
     fixed.scale = 1.0;
     let said = Warning::text(format!(
-        "the case's scale {} is not a positive number: taken as 1 (the reference dimensions are reported as the case gives them)",
-        case.scale
+        "the case's scale {} {why}: taken as 1 (the reference dimensions are reported as the case gives them)",
+        crate::charts::Query(case.scale)
     ));
     Some((fixed, said))
 }

@@ -359,7 +359,8 @@ fn edits_are_what_the_deck_is_written_with() {
 /// Fuzzing the library found a case's `scale` of 0, NaN or infinity taken as given: the
 /// coefficients were computed, and the reference dimensions (turned back into the deck's by
 /// the scale) came out as NaN or infinity, null in the JSON, with no warning. Such a scale is
-/// taken as 1, with a warning naming it.
+/// taken as 1, with a warning naming it. So is a positive scale so small that the reference
+/// dimensions divided by it overflow (1e-300: the reference block was null, with no warning).
 #[test]
 fn a_scale_that_is_not_a_positive_number_is_taken_as_one() {
     let mut plain = build_case::example_uav();
@@ -369,15 +370,21 @@ fn a_scale_that_is_not_a_positive_number_is_taken_as_one() {
         cases: vec![expected.clone()],
         file: String::new(),
     });
-    for scale in [0.0, -0.0, -2.0, f64::NAN, f64::INFINITY] {
+    let too_small = "overflow in the deck's units: taken as 1";
+    let not_positive = "is not a positive number: taken as 1";
+    for (scale, why) in [
+        (0.0, not_positive),
+        (-0.0, not_positive),
+        (-2.0, not_positive),
+        (f64::NAN, not_positive),
+        (f64::INFINITY, not_positive),
+        (1e-300, too_small),
+        (f64::MIN_POSITIVE, too_small),
+    ] {
         let mut case = plain.clone();
         case.scale = scale;
         let r = datcom::results::run_case(&case);
-        assert!(
-            says(&r, "is not a positive number: taken as 1"),
-            "scale {scale}: {:?}",
-            r.warnings
-        );
+        assert!(says(&r, why), "scale {scale}: {:?}", r.warnings);
         assert_eq!(r.scale, 1.0);
         assert_eq!(r.conditions, expected.conditions, "scale {scale}");
         let mut without = r.clone();
@@ -626,6 +633,22 @@ fn an_array_element_that_is_not_a_number_is_refused_where_it_is_read() {
         .map(ToString::to_string)
         .collect();
     assert_eq!(listed, ["$FLTCON MACH(1) = NaN", "$BODY R(3) = NaN"]);
+
+    // Section input under a surface name the library does not use is named by its keys (it
+    // was named by its places, `sections{0}.scalars{0}`).
+    let mut canard = build_case::example_uav();
+    let mut section = datcom::case::SectionInput::default();
+    section.scalars.insert("TOVC".into(), f64::NAN);
+    canard.sections.insert("CANARD".into(), section);
+    let listed: Vec<String> = canard
+        .values_not_numbers()
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    assert_eq!(
+        listed,
+        ["sections{CANARD}.scalars{TOVC} = NaN (not in its deck)"]
+    );
 }
 
 /// Fuzzing the library found a tiny positive value (1e-323) in a case with feet as units

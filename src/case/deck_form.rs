@@ -331,12 +331,15 @@ impl Case {
             .iter()
             .map(|v| error(v, format!("{}: not a number", v.assignment())))
             .collect();
-        // The deck gives the scale the case applies; one that is not positive is taken as 1.
-        if self.scale.is_finite() && self.scale <= 0.0 {
+        // The deck gives the scale the case applies; one that cannot be used is taken as 1
+        // (one that is not a number is listed above).
+        if let Some(why) =
+            crate::results::why_the_scale_is_not_used(self).filter(|_| self.scale.is_finite())
+        {
             let scale = NotANumber::scalar("SYNTHS", "SCALE", self.scale);
             found.push(error(
                 &scale,
-                format!("{}: not positive, taken as 1", scale.assignment()),
+                format!("{}: {why}, taken as 1", scale.assignment()),
             ));
         }
         let mut raw = self.to_raw();

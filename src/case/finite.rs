@@ -16,7 +16,7 @@ use super::Case;
 const DERIVED_FIELDS: [&str; 1] = ["conditions"];
 
 /// The first input number of `case` that is NaN or infinite, if any: the path of its field
-/// in the case (`synthesis.zcg`, `body.r[2]`; a map's entry by its place, `sections{1}`) and
+/// in the case (`synthesis.zcg`, `body.r[2]`; a map's entry by its key, `sections{CANARD}`) and
 /// its value.
 pub(super) fn first_value_not_a_number(case: &Case) -> Option<(String, f64)> {
     case.serialize(Finder)
@@ -263,6 +263,22 @@ impl ser::SerializeMap for Members {
     fn serialize_value<T: ?Sized + Serialize>(&mut self, value: &T) -> Walked {
         self.element(value, false)
     }
+    /// An entry whose key is text is named by its key (`sections{CANARD}`), others by place.
+    fn serialize_entry<K: ?Sized + Serialize, V: ?Sized + Serialize>(
+        &mut self,
+        key: &K,
+        value: &V,
+    ) -> Walked {
+        key.serialize(Finder)?;
+        let place = self.count;
+        self.count += 1;
+        value
+            .serialize(Finder)
+            .map_err(|e| match serde_json::to_value(key) {
+                Ok(serde_json::Value::String(name)) => e.inside(format_args!("{{{name}}}")),
+                _ => e.inside(format_args!("{{{place}}}")),
+            })
+    }
     fn end(self) -> Walked {
         Ok(())
     }
@@ -325,7 +341,10 @@ mod tests {
         section.scalars.insert("XOVC".into(), f64::NEG_INFINITY);
         case.sections.insert("WING".into(), section);
         let (path, _) = first_value_not_a_number(&case).unwrap();
-        assert_eq!(path, "sections{0}.scalars{1}", "map entries by their place");
+        assert_eq!(
+            path, "sections{WING}.scalars{XOVC}",
+            "map entries by their keys"
+        );
     }
 
     /// The flight conditions are derived from the flight input and checked where they are

@@ -49,16 +49,8 @@ pub fn condition_view(c: &ConditionResults, dim: Dim) -> ConditionView {
 /// Reference dimensions in the deck's units (geometry divided back by SCALE):
 /// (area, longitudinal length, lateral length, XCG, ZCG).
 pub fn reference_view(c: &CaseResults) -> (Option<f64>, Option<f64>, Option<f64>, f64, f64) {
-    let s = c.scale;
-    let len = |v: f64| from_si(v, c.dim, Dimension::Length) / s;
-    let r = &c.reference;
-    (
-        r.area.map(|a| from_si(a, c.dim, Dimension::Area) / (s * s)),
-        r.chord.map(len),
-        r.span.map(len),
-        len(r.xcg),
-        len(r.zcg),
-    )
+    let r = c.reference.in_deck_units(c.dim, c.scale);
+    (r.area, r.chord, r.span, r.xcg, r.zcg)
 }
 
 /// A derivative per radian in the unit the case asks for.
