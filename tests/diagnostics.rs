@@ -610,3 +610,86 @@ fn namelist_problems_are_placed_in_their_own_case() {
         d.diagnostics
     );
 }
+
+/// Found by the user review: a number beyond double precision was also checked as 0, giving a
+/// second error (`SREF must be positive; found 0`) about a value the deck does not give. It is
+/// not assigned: one error, at the number.
+#[test]
+fn a_number_beyond_double_precision_is_one_error_and_not_assigned() {
+    let d = read(&format!("{MINIMAL} $OPTINS SREF=1E400$\n"));
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!((e[0].line, e[0].column), (3, 15));
+    assert!(e[0].to_string().contains("found `1E400`"), "{}", e[0]);
+    let raw = deck::read(&format!("{MINIMAL} $OPTINS SREF=1E400$\n"), "t");
+    assert_eq!(numbers(&raw.cases[0], "OPTINS", "SREF"), [None]);
+}
+
+/// Found by the user review: a section without its planform was pointed at the case's first
+/// line, not at the section; and a ventral-fin section without $VFPLNF was accepted without a
+/// word (the original runs such a case: it tests only the wing, horizontal and vertical tail).
+#[test]
+fn a_section_without_its_planform_is_pointed_at_the_section() {
+    let d = read(&format!(
+        "{MINIMAL} $BODY NX=2.0, X(1)=0.0,1.0, R(1)=0.1,0.1$\nNACA-V-4-0012\nNACA-F-4-0012\n"
+    ));
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!((e[0].line, e[0].column), (4, 1));
+    assert_eq!(e[0].card.as_deref(), Some("VTPLNF"));
+    let fin: Vec<_> = d
+        .diagnostics
+        .iter()
+        .filter(|x| x.card.as_deref() == Some("VFPLNF"))
+        .collect();
+    assert_eq!(fin.len(), 1, "{:?}", d.diagnostics);
+    assert_eq!(fin[0].severity, Severity::Warning);
+    assert_eq!((fin[0].line, fin[0].column), (5, 1));
+    assert!(fin[0].to_string().contains("the case has no ventral fin"));
+}
+
+/// Found by the user review: the TRIM card's warning ended mid-sentence.
+#[test]
+fn the_trim_warning_is_a_whole_sentence() {
+    let d = read(&format!("TRIM\n{MINIMAL}"));
+    let trim: Vec<String> = d
+        .diagnostics
+        .iter()
+        .filter(|x| x.card.as_deref() == Some("TRIM"))
+        .map(ToString::to_string)
+        .collect();
+    assert_eq!(trim.len(), 1, "{:?}", d.diagnostics);
+    assert!(
+        trim[0].ends_with("the untrimmed pages are printed"),
+        "{}",
+        trim[0]
+    );
+}
+
+/// Found by the user review: a listing of the original given to `check` or `run` was read as
+/// a deck from the cards it echoes (129 errors for one listing, two "cases" run). It is one
+/// error that says what the file is and what reads it.
+#[test]
+fn a_listing_of_the_original_is_not_read_as_a_deck() {
+    let d = read(&format!(
+        " THIS SOFTWARE AND ANY ACCOMPANYING DOCUMENTATION\n IS RELEASED \"AS IS\".\n\
+         1          THE FOLLOWING IS A LIST OF ALL INPUT CARDS FOR THIS CASE.\n{MINIMAL}"
+    ));
+    assert!(d.cases.is_empty());
+    let e = errors(&d);
+    assert_eq!(e.len(), 1, "{:?}", d.diagnostics);
+    assert_eq!((e[0].line, e[0].column), (1, 1));
+    assert!(e[0].to_string().contains("listing of the original program"));
+    assert!(e[0]
+        .hint
+        .as_deref()
+        .unwrap_or("")
+        .contains("datcom-rs import"));
+    // The marks are looked for before the first namelist: a deck that mentions a listing in a
+    // later comment is read.
+    let d = read(&format!(
+        "{MINIMAL}* compare with THE FOLLOWING IS A LIST OF ALL INPUT CARDS\n"
+    ));
+    assert_eq!(d.cases.len(), 1);
+    assert!(errors(&d).is_empty(), "{:?}", d.diagnostics);
+}

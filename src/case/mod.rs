@@ -833,6 +833,29 @@ impl<'a> Checks<'a> {
         });
     }
 
+    /// A problem of `card` found at a place other than the card's (the case's first line when
+    /// none is known).
+    fn at_place(
+        &mut self,
+        severity: Severity,
+        at: Option<(usize, usize)>,
+        card: &str,
+        message: String,
+        hint: Option<&str>,
+    ) {
+        let (line, column) = at.unwrap_or((self.raw.first_line, 0));
+        self.out.push(Diagnostic {
+            severity,
+            file: self.file.to_string(),
+            line,
+            column,
+            card: Some(card.to_string()),
+            variable: None,
+            problem: DeckProblem::Physical { message },
+            hint: hint.map(str::to_string),
+        });
+    }
+
     /// A problem of a card as a whole (or of the case: no card), at a line.
     fn at_line(
         &mut self,
@@ -1444,6 +1467,21 @@ impl Case {
             self.sections.contains_key(surface.name())
                 || self.airfoils.iter().any(|a| a.surface == surface)
         };
+        // Where a surface's section is given: its NACA card or its section namelist, the
+        // earlier (a section without its planform is pointed at there).
+        let section_place = |c: &Checks, surface: Surface| {
+            let card = self
+                .airfoils
+                .iter()
+                .filter(|a| a.surface == surface && a.line > 0)
+                .map(|a| (a.line, 1))
+                .min();
+            let namelist = SECTION_NAMELISTS
+                .iter()
+                .find(|(_, s)| *s == surface)
+                .and_then(|(nl, _)| c.raw.origins.first_in(nl, c.raw.first_line));
+            card.into_iter().chain(namelist).min()
+        };
         for (planform, present, surface, pl, sc) in [
             (
                 "wing",
@@ -1460,22 +1498,35 @@ impl Case {
                 "HTSCHR or NACA-H",
             ),
         ] {
-            if present != has_section(surface) {
-                let message = if present {
-                    format!("the {planform} has a planform (${pl}) but no section ({sc}); the original does not run the case")
-                } else {
-                    format!("the {planform} has a section ({sc}) but no planform (${pl}); the original does not run the case")
-                };
+            if present && !has_section(surface) {
+                let message = format!("the {planform} has a planform (${pl}) but no section ({sc}); the original does not run the case");
                 c.push(Severity::Error, pl, None, message, None);
+            } else if !present && has_section(surface) {
+                let message = format!("the {planform} has a section ({sc}) but no planform (${pl}); the original does not run the case");
+                let at = section_place(c, surface);
+                c.at_place(Severity::Error, at, pl, message, None);
             }
         }
+        // The original refuses a vertical-tail section without its planform, and runs a
+        // case with a ventral-fin section without one (it has no such test).
         if self.vertical_tail.is_none() && has_section(Surface::VerticalTail) {
-            c.push(
+            let at = section_place(c, Surface::VerticalTail);
+            c.at_place(
                 Severity::Error,
+                at,
                 "VTPLNF",
-                None,
                 "a vertical-tail section is given without $VTPLNF; the original does not run the case".into(),
                 None,
+            );
+        }
+        if self.ventral_fin.is_none() && has_section(Surface::VentralFin) {
+            let at = section_place(c, Surface::VentralFin);
+            c.at_place(
+                Severity::Warning,
+                at,
+                "VFPLNF",
+                "a ventral-fin section is given without $VFPLNF: the case has no ventral fin, and no method uses the section".into(),
+                Some("add $VFPLNF, or remove the section"),
             );
         }
         match &self.flight {

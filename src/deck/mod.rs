@@ -522,7 +522,7 @@ impl<'a> Reader<'a> {
     }
 
     fn run(mut self) -> RawDeck {
-        if let Some(d) = self.missile_check() {
+        if let Some(d) = self.missile_check().or_else(|| self.listing_check()) {
             return RawDeck {
                 file: self.file.to_string(),
                 cases: Vec::new(),
@@ -570,6 +570,34 @@ impl<'a> Reader<'a> {
             }
         }
         None
+    }
+
+    /// A listing of the original program (for006.dat) given as a deck: it echoes the deck's
+    /// cards among its pages, which would be read as a deck with many errors. A listing's
+    /// marks come before the cards it echoes: the lines up to the first namelist are looked at.
+    fn listing_check(&self) -> Option<Diagnostic> {
+        let before_namelists = self
+            .lines
+            .iter()
+            .position(|l| opens_namelist(l.trim()).is_some())
+            .map_or(self.lines.len(), |i| i + 1);
+        let line = self.lines[..before_namelists]
+            .iter()
+            .position(|l| crate::report::legacy::is_listing(l))?;
+        Some(Diagnostic {
+            severity: Severity::Error,
+            file: self.file.to_string(),
+            line: line + 1,
+            column: 1,
+            card: None,
+            variable: None,
+            problem: DeckProblem::Case {
+                message: "this is a listing of the original program (for006.dat), not an input deck".into(),
+            },
+            hint: Some(
+                "`datcom-rs import` reads a listing into JSON, and `datcom-rs compare` and `report` take one as the reference".into(),
+            ),
+        })
     }
 
     fn line(&mut self, n: usize, raw: &'a str, all: &[&str]) {
@@ -1000,7 +1028,7 @@ impl<'a> Reader<'a> {
                     n,
                     col,
                     "TRIM",
-                    "the trim computation and its pages are not done; the untrimmed pages are",
+                    "the trim computation and its pages are not done; the untrimmed pages are printed",
                 );
             }
             Card::Plot => self.case.cards.plot = true,
@@ -1391,7 +1419,7 @@ impl Target<'_, '_> {
         let bad = a.values.iter().rev().find(|lit| match (var.kind, lit) {
             (Kind::Logical, Lit::Number { .. }) => true,
             (Kind::Real | Kind::Integer, Lit::Logical(_)) => true,
-            (Kind::Integer, Lit::Number { value, .. }) => value.fract() != 0.0,
+            (Kind::Integer, Lit::Number { value, .. }) => value.is_finite() && value.fract() != 0.0,
             _ => false,
         });
         if let Some(bad) = bad {
@@ -1470,7 +1498,8 @@ impl Target<'_, '_> {
                     if v.len() < i {
                         v.resize(i, None);
                     }
-                    v[i - 1] = Some(*value);
+                    // A number beyond double precision (said where it was read) is not given.
+                    v[i - 1] = value.is_finite().then_some(*value);
                 }
                 (Value::Logicals(v), Lit::Logical(b)) => {
                     if v.len() < i {

@@ -223,8 +223,10 @@ impl<'s, 't> Parser<'s, 't> {
                     },
                     None,
                 );
+                // Kept in its place, and not assigned (the reader skips values that are not
+                // numbers): no later check reads a value the deck does not give.
                 Lit::Number {
-                    value: 0.0,
+                    value: f64::NAN,
                     integer: false,
                 }
             }
