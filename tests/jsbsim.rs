@@ -467,3 +467,37 @@ fn an_aircraft_without_weight_is_a_typed_error() {
         datcom::report::jsbsim::ExportError::MissingWeight { case: 1 }
     );
 }
+
+/// The user review found a deck with a Mach number beyond the methods' subsonic range beside
+/// one within it exported nothing ("has no coefficient with a value"): every term's table
+/// over Mach needed a value at every Mach number. Such a condition is left out, and the header
+/// says so.
+#[test]
+fn a_mach_number_without_values_is_left_out_of_the_export() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("namelists/example-uav.dcm");
+    let mut deck = datcom::read_deck_file(&path).unwrap();
+    let case = &mut deck.cases[0];
+    case.flight.as_mut().unwrap().mach = vec![0.3, 0.7];
+    case.prepare();
+    let results = datcom::results::run_case(case);
+    let model = datcom::report::jsbsim::model("x", &results).unwrap();
+    assert_eq!(model.mach, [0.3]);
+    assert!(
+        model
+            .conditions_not_used
+            .iter()
+            .any(|c| c.starts_with("Mach 0.7 at 0 m: no coefficient has a value")),
+        "{:?}",
+        model.conditions_not_used
+    );
+    // Every Mach number without values: the error names them.
+    case.flight.as_mut().unwrap().mach = vec![0.7, 0.8];
+    case.prepare();
+    let results = datcom::results::run_case(case);
+    let err = datcom::report::jsbsim::model("x", &results).unwrap_err();
+    assert!(
+        err.to_string()
+            .contains("Mach 0.8 at 0 m: no coefficient has a value"),
+        "{err}"
+    );
+}

@@ -392,6 +392,15 @@ pub fn conditions(
         Some(h) => format!("Mach {} at {} m", num(c.condition.mach), num(h)),
         None => format!("Mach {}", num(c.condition.mach)),
     };
+    // A condition where no exported term has a value (a Mach number beyond the methods'
+    // range) is left out, not allowed to empty every term's table.
+    let has_values = |c: &ConditionResults| {
+        TERMS.iter().any(|t| {
+            t.column
+                .values(c)
+                .is_ok_and(|v| v.iter().any(|x| x.is_some_and(f64::is_finite)))
+        })
+    };
     for c in last {
         if c.condition.altitude_index != first_altitude {
             not_used.push(format!(
@@ -403,9 +412,24 @@ pub fn conditions(
                 "{}: its Mach number is already exported",
                 describe(c)
             ));
+        } else if !has_values(c) {
+            not_used.push(format!(
+                "{}: no coefficient has a value (see the warnings of `datcom-rs run`)",
+                describe(c)
+            ));
         } else {
             used.push(c);
         }
+    }
+    if used.is_empty() {
+        return Err(ExportError::NothingExportable {
+            case,
+            configuration: format!(
+                "{} ({})",
+                results.configuration.to_lowercase(),
+                not_used.join("; ")
+            ),
+        });
     }
     used.sort_by(|a, b| a.condition.mach.total_cmp(&b.condition.mach));
     let alpha = &used[0].alpha_deg;
