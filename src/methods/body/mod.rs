@@ -44,7 +44,7 @@ use serde::Serialize;
 
 use crate::case::units::to_si;
 use crate::case::Case;
-use crate::charts::ChartWarning;
+use crate::charts::{ChartWarning, Query};
 use crate::conditions::FlightCondition;
 use crate::deck::schema::Dimension;
 use crate::geometry::BodyGeometry;
@@ -173,11 +173,13 @@ impl fmt::Display for BodyWarning {
             BodyWarning::Chart(w) => write!(f, "{w}"),
             BodyWarning::NoCrossflowAftOfX0 { x0 } => write!(
                 f,
-                "x0 = {x0} m lies in the last interval of the body stations: no viscous crossflow is added (as in the original)"
+                "x0 = {} m lies in the last interval of the body stations: no viscous crossflow is added (as in the original)",
+                Query(*x0)
             ),
             BodyWarning::ConstantAreaToX0 { x0 } => write!(
                 f,
-                "the cross-section area is constant from the nose to x0 = {x0} m: the moment integral is taken as zero (the original's value is undefined)"
+                "the cross-section area is constant from the nose to x0 = {} m: the moment integral is taken as zero (the original's value is undefined)",
+                Query(*x0)
             ),
             BodyWarning::NoValue {
                 alpha_deg,
@@ -194,7 +196,8 @@ impl fmt::Display for BodyWarning {
             ),
             BodyWarning::AreaStep { x1 } => write!(
                 f,
-                "the cross-section area drops in a step at x = {x1} m (a repeated station): the steepest decrease x1 is taken there (the original's slope is not a number there and it takes x1 = the body length)"
+                "the cross-section area drops in a step at x = {} m (a repeated station): the steepest decrease x1 is taken there (the original's slope is not a number there and it takes x1 = the body length)",
+                Query(*x1)
             ),
             BodyWarning::ContoursShort { given, stations } => write!(
                 f,

@@ -238,7 +238,7 @@ impl fmt::Display for WingWarning {
                 "CM and CMA not applicable from alpha = {alpha_deg} deg (CLA departs from the lift-curve slope by more than 90 %)"
             ),
             WingWarning::NoDrag { reason } => write!(f, "no drag: {reason}"),
-            WingWarning::Section { message } => write!(f, "wing section: {message}"),
+            WingWarning::Section { message } => write!(f, "section: {message}"),
         }
     }
 }
