@@ -322,7 +322,8 @@ enum Command {
         deck: PathBuf,
         #[arg(long, value_enum, default_value = "text")]
         format: RunFormat,
-        /// Write the output to DIR/<deck name>.<txt|json|csv> instead of standard output.
+        /// Write the output to DIR/<deck name>.<txt|json|csv|out> (`out` for --format for006)
+        /// instead of standard output.
         #[arg(short = 'o', long = "output", value_name = "DIR")]
         output: Option<PathBuf>,
         #[command(flatten)]
@@ -785,6 +786,12 @@ fn airfoil(file: &Path, namelist: &str, points: usize) -> ExitCode {
             );
             ExitCode::SUCCESS
         }
+        // --points out of range is a usage error; a file that is not coordinates is input
+        // with errors, as a deck with errors.
+        Err(e @ datcom::geometry::airfoil_file::AirfoilFileError::Stations(_)) => {
+            eprintln!("datcom-rs: --points: {e}");
+            ExitCode::from(2)
+        }
         Err(e) => {
             eprintln!("datcom-rs: {}: {e}", file.display());
             ExitCode::from(1)
@@ -1015,6 +1022,14 @@ fn main() -> ExitCode {
                 RunFormat::Csv => (datcom::report::csv::to_string(&results), "csv"),
                 RunFormat::For006 => (datcom::report::for006::to_string(&results), "out"),
             };
+            // The text and JSON reports hold the cases' warnings; the CSV and the listing have
+            // no place for them: they go to stderr.
+            if matches!(format, RunFormat::Csv | RunFormat::For006) {
+                let mut err = std::io::stderr().lock();
+                for case in &results.cases {
+                    let _ = err.write_all(datcom::report::text::warning_lines(case).as_bytes());
+                }
+            }
             let code = emit(&text, &deck, ext, output.as_deref());
             if code == ExitCode::SUCCESS && d.has_errors() {
                 ExitCode::from(1)

@@ -81,6 +81,30 @@ fn usage_error_exits_2() {
     assert_eq!(out.status.code(), Some(2));
 }
 
+/// `airfoil`: a --points out of range is a usage error (2; the user review found 1); a file
+/// that is not coordinates is input with errors (1), as a deck with errors.
+#[test]
+fn airfoil_exit_codes() {
+    let dir = temp_dir("airfoil");
+    let good = dir.join("good.dat");
+    std::fs::write(&good, "test\n1 0\n0.5 0.05\n0 0\n0.5 -0.05\n1 0\n").unwrap();
+    let bad = dir.join("bad.dat");
+    std::fs::write(&bad, "not coordinates\nx y z\n").unwrap();
+    let code = |file: &std::path::Path, extra: &[&str]| {
+        bin()
+            .arg("airfoil")
+            .arg(file)
+            .args(extra)
+            .output()
+            .unwrap()
+            .status
+            .code()
+    };
+    assert_eq!(code(&good, &["--points", "60"]), Some(2));
+    assert_eq!(code(&bad, &[]), Some(1));
+    assert_eq!(code(&dir.join("missing.dat"), &[]), Some(2));
+}
+
 #[test]
 fn run_json_and_csv_and_output_dir() {
     let out = bin()
@@ -106,6 +130,20 @@ fn run_json_and_csv_and_output_dir() {
     assert_eq!(out.status.code(), Some(0));
     let csv = std::fs::read_to_string(dir.join("example-uav.csv")).unwrap();
     assert!(csv.starts_with("case,caseid,condition"));
+    // The CSV and the listing have no place for the cases' warnings: they go to stderr (the
+    // user review found the CSV run said nothing of them).
+    for format in ["csv", "for006"] {
+        let out = bin()
+            .args(["run", &example(), "--format", format])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains(" warning (case 1): Mach 0.06: dynamic derivatives:"),
+            "{format}: {stderr}"
+        );
+        assert!(!String::from_utf8_lossy(&out.stdout).contains("warning (case"));
+    }
 }
 
 #[test]

@@ -195,9 +195,17 @@ pub fn to_string(results: &Results) -> String {
                 super::auxiliary::interference(&mut s, &view);
             }
         }
-        for w in crate::warning::texts(&case.warnings) {
-            let _ = writeln!(s, " warning (case {}): {w}", case.number);
-        }
+        s.push_str(&warning_lines(case));
+    }
+    s
+}
+
+/// A case's warnings, one line each, as the text report ends its case with them (and the
+/// command line writes them to stderr with the formats that have no place for them).
+pub fn warning_lines(case: &CaseResults) -> String {
+    let mut s = String::new();
+    for w in crate::warning::texts(&case.warnings) {
+        let _ = writeln!(s, " warning (case {}): {w}", case.number);
     }
     s
 }
