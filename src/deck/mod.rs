@@ -580,10 +580,10 @@ impl<'a> Reader<'a> {
             .lines
             .iter()
             .position(|l| opens_namelist(l.trim()).is_some())
-            .map_or(self.lines.len(), |i| i + 1);
+            .unwrap_or(self.lines.len());
         let line = self.lines[..before_namelists]
             .iter()
-            .position(|l| crate::report::legacy::is_listing(l))?;
+            .position(|l| crate::report::legacy::is_listing_line(l))?;
         Some(Diagnostic {
             severity: Severity::Error,
             file: self.file.to_string(),

@@ -82,6 +82,25 @@ pub fn is_listing(text: &str) -> bool {
     LISTING_MARKS.iter().any(|m| text.contains(m))
 }
 
+/// The length of the shortest of [`LISTING_MARKS`].
+const SHORTEST_MARK: usize = {
+    let mut shortest = usize::MAX;
+    let mut i = 0;
+    while i < LISTING_MARKS.len() {
+        if LISTING_MARKS[i].len() < shortest {
+            shortest = LISTING_MARKS[i].len();
+        }
+        i += 1;
+    }
+    shortest
+};
+
+/// Whether one line of a file is one of a listing's marks (lines shorter than every mark are
+/// not searched: the deck reader asks this of a deck's first cards).
+pub fn is_listing_line(line: &str) -> bool {
+    line.len() >= SHORTEST_MARK && is_listing(line)
+}
+
 /// Whether a listing has any page of results (the original's page title, which a listing
 /// that stopped at input errors lacks; every listing has the CONERR page).
 pub fn has_result_pages(text: &str) -> bool {
