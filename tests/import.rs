@@ -1,5 +1,7 @@
 //! Reading the original's listings into the JSON of `run`, and comparing results.
 
+mod common;
+
 use datcom::report::{compare, json, legacy};
 
 #[test]
@@ -162,5 +164,48 @@ fn a_page_with_power_or_ground_effects_is_marked_and_compared_for_what_they_leav
     assert_eq!(
         read[0].caseid.as_deref(),
         Some("FLAPS INCLUDED IN THIS RUN")
+    );
+}
+
+/// The units of an imported listing are those `run --format json` gives for the same deck:
+/// metric (`N/ M**2`, `DEG K`, `1/ M` as the original prints them), centimetre, inch and foot
+/// listings. The unit line was split on blanks and its words taken by place, so the metric
+/// listings had pressure `N/`, temperature `M**2`, and the feet listings temperature `DEG`.
+#[test]
+fn imported_units_are_those_run_gives_for_the_deck() {
+    let Some(dir) = common::shared_dir(
+        "oracle/cases",
+        "imported_units_are_those_run_gives_for_the_deck",
+    ) else {
+        return;
+    };
+    let mut lengths = std::collections::BTreeSet::new();
+    for case_dir in std::fs::read_dir(&dir).unwrap().filter_map(Result::ok) {
+        let listing = common::text(&case_dir.path().join("for006.dat"));
+        let deck = datcom::read_deck(&common::text(&case_dir.path().join("input.dcm")), "deck");
+        let ours: serde_json::Value =
+            serde_json::from_str(&json::to_string(&datcom::run(&deck))).unwrap();
+        let imported: serde_json::Value =
+            serde_json::from_str(&json::listing_to_string(&listing, "x")).unwrap();
+        let our_units: Vec<&serde_json::Value> = ours["cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| &c["units"])
+            .collect();
+        for c in imported["cases"].as_array().unwrap() {
+            assert!(
+                our_units.contains(&&c["units"]),
+                "{}: imported {} is none of run's {our_units:?}",
+                case_dir.path().display(),
+                c["units"]
+            );
+            lengths.insert(c["units"]["length"].as_str().unwrap().to_string());
+        }
+    }
+    assert_eq!(
+        lengths.into_iter().collect::<Vec<_>>(),
+        ["CM", "FT", "IN", "M"],
+        "listings of every DIM"
     );
 }

@@ -310,7 +310,13 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
             .iter()
             .enumerate()
             .map(|(i, c)| {
-                let unit = |k: usize| c.units.get(k).cloned().unwrap_or_default();
+                let unit = |field: &str| {
+                    c.units
+                        .iter()
+                        .find(|(f, _)| *f == field)
+                        .map(|(_, u)| u.clone())
+                        .unwrap_or_default()
+                };
                 let first = c.conditions.first();
                 let field =
                     |name: &str| first.and_then(|k| k.row.field(name)).and_then(|f| f.value);
@@ -318,12 +324,12 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                     case: i + 1,
                     caseid: c.caseid.clone(),
                     units: UnitsJson {
-                        length: unit(0),
-                        velocity: unit(1),
-                        pressure: unit(2),
-                        temperature: unit(3),
-                        reynolds_per_length: unit(4),
-                        area: unit(5),
+                        length: unit("altitude"),
+                        velocity: unit("velocity"),
+                        pressure: unit("pressure"),
+                        temperature: unit("temperature"),
+                        reynolds_per_length: unit("reynolds_per_length"),
+                        area: unit("area"),
                     },
                     sections: Default::default(),
                     reference: ReferenceJson {

@@ -54,6 +54,24 @@ fn slice(line: &str, a: usize, b: usize) -> String {
         .to_string()
 }
 
+/// The unit names of a FLIGHT CONDITIONS header's unit line, each read in the columns of its
+/// field ([`FIELDS`]), with the blanks the original leaves inside a name dropped after a slash
+/// (`N/ M**2` is `N/M**2`, `1/ M` is `1/M`; `DEG R` keeps its blank): (field, unit) for each
+/// field with a unit printed above it.
+pub fn unit_names(line: &str) -> Vec<(&'static str, String)> {
+    FIELDS
+        .iter()
+        .filter_map(|(name, a, b)| {
+            let words: Vec<String> = slice(line, *a, *b)
+                .split_whitespace()
+                .map(str::to_string)
+                .collect();
+            let unit = words.join(" ").replace("/ ", "/");
+            (!unit.is_empty()).then_some((*name, unit))
+        })
+        .collect()
+}
+
 /// Unit in the last printed digit of a fixed or exponent field (`1.9676E+03` -> 0.1).
 pub fn last_digit_unit(text: &str) -> f64 {
     let t = text.trim();
@@ -140,6 +158,24 @@ mod tests {
         assert_eq!(r.field("pressure").unwrap().value, Some(1967.6));
         assert_eq!(r.field("zcg").unwrap().value, Some(-0.47));
         assert!((last_digit_unit("1.9676E+03") - 0.1).abs() < 1e-12);
+    }
+
+    /// Each unit in its field's columns: the original's two-word names (`DEG K`) and the
+    /// blank it leaves after a slash (`N/ M**2`) were split into separate units and read by
+    /// their place in the line (pressure `N/`, temperature `M**2`).
+    #[test]
+    fn reads_the_units_by_column() {
+        let metric = "              M        M/SEC      N/ M**2       DEG K         1/ M                M**2         M         M         M         M";
+        let units = unit_names(metric);
+        let unit = |f: &str| units.iter().find(|(n, _)| *n == f).map(|(_, u)| u.as_str());
+        assert_eq!(unit("mach"), None);
+        assert_eq!(unit("altitude"), Some("M"));
+        assert_eq!(unit("velocity"), Some("M/SEC"));
+        assert_eq!(unit("pressure"), Some("N/M**2"));
+        assert_eq!(unit("temperature"), Some("DEG K"));
+        assert_eq!(unit("reynolds_per_length"), Some("1/M"));
+        assert_eq!(unit("area"), Some("M**2"));
+        assert_eq!(unit("zcg"), Some("M"));
         assert!((last_digit_unit("511.570") - 0.001).abs() < 1e-12);
     }
 }
@@ -272,8 +308,10 @@ pub struct ListedCondition {
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ListedCase {
     pub caseid: Option<String>,
-    /// Unit names of the FLIGHT CONDITIONS header (FT, FT/SEC, LB/FT**2, DEG R, 1/FT, FT**2).
-    pub units: Vec<String>,
+    /// Unit names of the FLIGHT CONDITIONS header by field of [`FIELDS`] (altitude FT,
+    /// velocity FT/SEC, pressure LB/FT**2, temperature DEG R, reynolds_per_length 1/FT, area
+    /// FT**2, ...), read by [`unit_names`].
+    pub units: Vec<(&'static str, String)>,
     pub conditions: Vec<ListedCondition>,
 }
 
@@ -412,10 +450,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             case.caseid = caseid;
         }
         if case.units.is_empty() {
-            case.units = lines
-                .get(fc + 3)
-                .map(|u| u.split_whitespace().map(str::to_string).collect())
-                .unwrap_or_default();
+            case.units = lines.get(fc + 3).map_or_else(Vec::new, |u| unit_names(u));
         }
         let same = |c: &ListedCondition| same_page(c, &configuration, &row);
         // A static page goes with the dynamic page of its configuration, condition and
