@@ -281,7 +281,9 @@ enum Command {
         #[arg(long, default_value_t = 50)]
         points: usize,
     },
-    /// Read a listing of the original program (for006.dat) into the JSON of `run`.
+    /// Read a listing of the original program (for006.dat), or of `run --format for006`, into
+    /// the JSON of `run`. A file with nothing to read (the text report of `run`, a file that
+    /// is no listing, a listing without a page read) is refused with exit code 2.
     Import {
         listing: PathBuf,
         #[arg(long, value_enum, default_value = "json")]
@@ -427,14 +429,20 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
     } else if datcom::report::legacy::is_listing(&text) {
         // A listing without a single page of the original's (it stopped at input errors) is
         // no reference: read as a deck, its echo of the input cards would be run here and
-        // agree with ours.
-        if !datcom::report::legacy::has_result_pages(&text) {
-            eprintln!(
-                "datcom-rs: {name}: a listing of the original program without any result page (it stopped before computing: the error lines of its CONERR page say why); nothing to compare"
-            );
-            return Err(ExitCode::from(2));
+        // agree with ours. Our text report is refused (read as a listing, its numbers came
+        // out shifted); a listing whose pages are none that are read has nothing to compare.
+        use datcom::report::legacy::NotImported;
+        match datcom::report::json::import_listing(&text, &name) {
+            Ok(json) => json,
+            Err(e @ NotImported::NoPageRead { .. }) => {
+                eprintln!("datcom-rs: {name}: {e}; nothing of it is compared");
+                datcom::report::json::listing_to_string(&text, &name)
+            }
+            Err(e) => {
+                eprintln!("datcom-rs: {name}: {e}; nothing to compare");
+                return Err(ExitCode::from(2));
+            }
         }
-        datcom::report::json::listing_to_string(&text, &name)
     } else {
         let deck = rules.apply(datcom::read_deck(&text, &name));
         datcom::report::json::to_string(&datcom::run(&deck))
@@ -942,12 +950,18 @@ fn main() -> ExitCode {
                     return ExitCode::from(2);
                 }
             };
+            let name = listing.display().to_string();
+            // A text that would import as nothing, or as invented numbers (our text report,
+            // a deck, any other file), is refused.
+            let json = match datcom::report::json::import_listing(&text, &name) {
+                Ok(json) => json,
+                Err(e) => {
+                    eprintln!("datcom-rs: {name}: {e}; nothing imported");
+                    return ExitCode::from(2);
+                }
+            };
             match format {
                 ParseFormat::Json => {
-                    let json = datcom::report::json::listing_to_string(
-                        &text,
-                        &listing.display().to_string(),
-                    );
                     let _ = writeln!(std::io::stdout().lock(), "{json}");
                 }
             }

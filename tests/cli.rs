@@ -248,6 +248,71 @@ fn a_listing_without_results_is_refused_not_read_as_a_deck() {
     );
 }
 
+/// `run`'s default text output was read back by `import`, `compare` and `report` as a listing,
+/// its static table a column off: CL, CM and CLA null, CYB = 1 and CLB = -9.941 invented, 0/11
+/// agreeing, exit 0. It is refused with a pointer to the formats that read back; so is any
+/// file that is no listing, and a listing with no page that is read (exit 2: a file error).
+#[test]
+fn the_text_report_and_other_files_are_not_imported() {
+    let dir = temp_dir("text-report");
+    let deck = format!("{}/namelists/navion.dcm", env!("CARGO_MANIFEST_DIR"));
+    let run = |format: &str| {
+        let out = bin()
+            .args(["run", &deck, "--format", format])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "run --format {format}");
+        let path = dir.join(format!("navion.{format}"));
+        std::fs::write(&path, &out.stdout).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let (text, listing, csv) = (run("text"), run("for006"), run("csv"));
+    for args in [
+        vec!["import", &text],
+        vec!["compare", &text, &deck],
+        vec!["compare", &deck, &text],
+        vec!["report", &deck, "--reference", &text],
+    ] {
+        let out = bin().args(&args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("text report") && stderr.contains("--format for006"),
+            "{args:?}: {stderr}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    let jet = dir.join("jet.dat");
+    std::fs::write(
+        &jet,
+        " THIS SOFTWARE AND ANY ACCOMPANYING DOCUMENTATION
+         1                          AUTOMATED STABILITY AND CONTROL METHODS PER APRIL 1976 VERSION OF DATCOM
+                                                              SPECIAL CONTROL METHODS
+",
+    )
+    .unwrap();
+    let readme = format!("{}/README.md", env!("CARGO_MANIFEST_DIR"));
+    for (file, says) in [
+        (csv.as_str(), "not a listing"),
+        (readme.as_str(), "not a listing"),
+        (jet.to_str().unwrap(), "SPECIAL CONTROL METHODS"),
+    ] {
+        let out = bin().args(["import", file]).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{file}: {stderr}");
+        assert!(stderr.contains(says), "{file}: {stderr}");
+        assert!(out.stdout.is_empty(), "{file}");
+    }
+    // The listing of the same deck reads back, and agrees with the deck everywhere.
+    let out = bin().args(["compare", &listing, &deck]).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.lines().count() > 10, "{stdout}");
+    for line in stdout.lines().skip(1) {
+        assert!(line.contains(" 100.0%"), "{line}");
+    }
+}
+
 /// Each rule flag on a deck it changes: `--X original` differs from the default, `--X`
 /// with the default's value does not. (`--original` sets every rule without reading the
 /// flags, so only this catches a flag mapped to the wrong rule.)

@@ -106,6 +106,65 @@ pub fn has_result_pages(text: &str) -> bool {
     text.contains(LISTING_MARKS[0])
 }
 
+/// Why a text is not imported as a listing ([`import`]).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum NotImported {
+    /// datcom-rs's own text report (`run`'s default format): its static table is not in the
+    /// listing's columns and its cases are not marked, so it cannot be read back reliably.
+    #[error("this is datcom-rs's text report (the default format of `run`), which is not read back (its static table is not in the listing's columns); write the results with `run --format json` or `run --format for006`")]
+    TextReport,
+    /// No page title, disclaimer, input-checking page or input-card list of the original.
+    #[error("not a listing of the original program (for006.dat): none of its page titles or input-card lists")]
+    NotAListing,
+    /// A listing of the original that stopped before computing (input errors).
+    #[error("a listing of the original program without any result page (it stopped before computing: the error lines of its CONERR page say why)")]
+    NoResultPage,
+    /// Result pages, none of a kind the reader reads (static, dynamic, PART).
+    #[error("a listing of the original program whose result pages{} are none of the pages read (CHARACTERISTICS AT ANGLE OF ATTACK AND IN SIDESLIP, DYNAMIC DERIVATIVES, CONFIGURATION AUXILIARY AND PARTIAL OUTPUT)", if kinds.is_empty() { String::new() } else { format!(" ({})", kinds.join("; ")) })]
+    NoPageRead {
+        /// The kinds of its result pages (the line under each page title), each once.
+        kinds: Vec<String>,
+    },
+}
+
+/// Reads a listing of the original program (or ours, `--format for006`) as [`read_listing`]
+/// does, refusing what would read as nothing or as invented numbers: datcom-rs's text report,
+/// a text that is no listing, a listing without result pages or without a page read.
+pub fn import(text: &str) -> Result<Vec<ListedCase>, NotImported> {
+    let lines = || text.lines().map(str::trim_end);
+    if lines().any(|l| l == super::text::TITLE) {
+        return Err(NotImported::TextReport);
+    }
+    if !is_listing(text) {
+        return Err(NotImported::NotAListing);
+    }
+    if !has_result_pages(text) {
+        return Err(NotImported::NoResultPage);
+    }
+    let cases = read_listing(text);
+    if cases.is_empty() {
+        let all: Vec<&str> = text.lines().collect();
+        let mut kinds: Vec<String> = Vec::new();
+        for (i, l) in all.iter().enumerate() {
+            if !l.contains(LISTING_MARKS[0]) {
+                continue;
+            }
+            // The first line under the title that is not the rest of it (some pages print
+            // `APRIL 1976 VERSION OF DATCOM` on a line of its own).
+            let kind = all[i + 1..]
+                .iter()
+                .map(|k| k.trim())
+                .take(3)
+                .find(|k| !k.is_empty() && !k.contains("VERSION OF DATCOM"));
+            if let Some(kind) = kind.filter(|k| !kinds.iter().any(|x| x == k)) {
+                kinds.push(kind.to_string());
+            }
+        }
+        return Err(NotImported::NoPageRead { kinds });
+    }
+    Ok(cases)
+}
+
 /// Every FLIGHT CONDITIONS row of a listing, with its page kind.
 pub fn flight_condition_rows(listing: &str) -> Vec<ConditionRow> {
     let lines: Vec<&str> = listing.lines().collect();
