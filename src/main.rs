@@ -290,7 +290,8 @@ enum Command {
         format: ParseFormat,
     },
     /// Agreement between two results, coefficient by coefficient, worst first. Each of OURS
-    /// and REFERENCE is a deck (run here), a JSON of `run` or `import`, or a listing.
+    /// and REFERENCE is a deck (run here), a JSON of `run` or `import`, or a listing; any other
+    /// file is refused (exit 2), and a deck with errors too, with its diagnostics (exit 1).
     Compare {
         ours: PathBuf,
         reference: PathBuf,
@@ -350,7 +351,11 @@ fn load(path: &Path) -> Result<datcom::Deck, ExitCode> {
 /// A deck read under `rules` with its diagnostics printed; exit 2 when unreadable, 1 when it
 /// has errors (the commands that need a whole deck refuse one with errors).
 fn load_without_errors(path: &Path, rules: Rules) -> Result<datcom::Deck, ExitCode> {
-    let d = rules.apply(load(path)?);
+    without_errors(rules.apply(load(path)?), path)
+}
+
+/// A deck with its diagnostics printed (as `run` prints them); exit 1 when it has errors.
+fn without_errors(d: datcom::Deck, path: &Path) -> Result<datcom::Deck, ExitCode> {
     print_diagnostics(&d, false, &mut std::io::stderr().lock());
     if d.has_errors() {
         eprintln!(
@@ -416,7 +421,9 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
     }
 }
 
-/// A result in the JSON shape of `run`, from a deck, a JSON file or a listing.
+/// A result in the JSON shape of `run`, from a deck, a JSON file of `run` or `import`, or a
+/// listing. Any other file is refused (exit 2), as a deck with errors is (its diagnostics
+/// printed; exit 1).
 fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode> {
     let bytes = std::fs::read(path).map_err(|e| {
         eprintln!("datcom-rs: cannot read {}: {e}", path.display());
@@ -445,12 +452,26 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
         }
     } else {
         let deck = rules.apply(datcom::read_deck(&text, &name));
+        // A file of which no case is read (a README, a TOML or CSV file) is no deck: run, it
+        // compared as nothing with exit code 0.
+        if deck.cases.is_empty() {
+            eprintln!(
+                "datcom-rs: {name}: neither a deck (no case is read from it; `datcom-rs check {name}` says why), a JSON of `run` or `import`, nor a listing"
+            );
+            return Err(ExitCode::from(2));
+        }
+        let deck = without_errors(deck, path)?;
         datcom::report::json::to_string(&datcom::run(&deck))
     };
-    serde_json::from_str(&json).map_err(|e| {
+    let value: serde_json::Value = serde_json::from_str(&json).map_err(|e| {
         eprintln!("datcom-rs: {}: not a result: {e}", path.display());
         ExitCode::from(2)
-    })
+    })?;
+    if !value["cases"].is_array() {
+        eprintln!("datcom-rs: {name}: a JSON, but not of `run` or `import` (no \"cases\")");
+        return Err(ExitCode::from(2));
+    }
+    Ok(value)
 }
 
 fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -> ExitCode {

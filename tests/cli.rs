@@ -313,6 +313,64 @@ fn the_text_report_and_other_files_are_not_imported() {
     }
 }
 
+/// `compare` took any file as a deck: a README, a TOML or CSV file, a JSON that is no result
+/// compared as nothing, exit 0; a deck with errors was run without a word. Now the first is
+/// refused (exit 2) and the second prints its diagnostics and is refused as the commands that
+/// need a whole deck refuse it (exit 1).
+#[test]
+fn compare_refuses_what_is_no_result_and_a_deck_with_errors() {
+    let dir = temp_dir("compare-files");
+    let root = env!("CARGO_MANIFEST_DIR");
+    let csv = dir.join("uav.csv");
+    let out = bin()
+        .args(["run", &example(), "--format", "csv"])
+        .output()
+        .unwrap();
+    std::fs::write(&csv, &out.stdout).unwrap();
+    let not_result = dir.join("other.json");
+    std::fs::write(&not_result, "{\"a\": 1}\n").unwrap();
+    for (file, says) in [
+        (format!("{root}/README.md"), "neither a deck"),
+        (format!("{root}/Cargo.toml"), "neither a deck"),
+        (csv.to_str().unwrap().to_string(), "neither a deck"),
+        (
+            not_result.to_str().unwrap().to_string(),
+            "not of `run` or `import`",
+        ),
+    ] {
+        for args in [
+            ["compare", &example(), &file],
+            ["compare", &file, &example()],
+        ] {
+            let out = bin().args(args).output().unwrap();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+            assert!(stderr.contains(says), "{args:?}: {stderr}");
+            assert!(out.stdout.is_empty(), "{args:?}");
+        }
+    }
+    let misspelled = dir.join("m1.dcm");
+    std::fs::write(
+        &misspelled,
+        std::fs::read_to_string(example())
+            .unwrap()
+            .replace("SSPNE=", "SSPNEE="),
+    )
+    .unwrap();
+    let out = bin()
+        .args(["compare", &example(), misspelled.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error [VTPLNF SSPNEE]: unknown variable SSPNEE"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("m1.dcm has"), "{stderr}");
+    assert!(out.stdout.is_empty());
+}
+
 /// Each rule flag on a deck it changes: `--X original` differs from the default, `--X`
 /// with the default's value does not. (`--original` sets every rule without reading the
 /// flags, so only this catches a flag mapped to the wrong rule.)
