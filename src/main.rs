@@ -474,12 +474,24 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
     Ok(value)
 }
 
+/// The agreement of `ours` with `reference` (`compare`, `report` against a result), saying on
+/// standard error why when no page of the reference has a counterpart in ours.
+fn agreement(
+    ours: &serde_json::Value,
+    reference: &serde_json::Value,
+) -> Vec<datcom::report::compare::ColumnAgreement> {
+    if let Some(why) = datcom::report::compare::nothing_in_common(ours, reference) {
+        eprintln!("datcom-rs: {why}");
+    }
+    datcom::report::compare::compare(ours, reference)
+}
+
 fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -> ExitCode {
     let (a, b) = match (results_json(ours, rules), results_json(reference, rules)) {
         (Ok(a), Ok(b)) => (a, b),
         (Err(c), _) | (_, Err(c)) => return c,
     };
-    let rows = datcom::report::compare::compare(&a, &b);
+    let rows = agreement(&a, &b);
     let text = match format {
         CompareFormat::Text => datcom::report::compare::to_text(&rows),
         CompareFormat::Json => serde_json::to_string_pretty(&rows).unwrap_or_default(),
@@ -531,7 +543,7 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, rules: Rules) -> 
             (Ok(a), Ok(b)) => (a, b),
             (Err(c), _) | (_, Err(c)) => return c,
         };
-        let rows = datcom::report::compare::compare(&a, &b);
+        let rows = agreement(&a, &b);
         match format {
             ReportFormat::Text => datcom::report::compare::to_text(&rows),
             ReportFormat::Markdown => agreement_table(&rows, true),

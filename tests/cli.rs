@@ -371,6 +371,35 @@ fn compare_refuses_what_is_no_result_and_a_deck_with_errors() {
     assert!(out.stdout.is_empty());
 }
 
+/// Two results with no flight condition in common showed every row missing without a word;
+/// now `compare` says that no page was paired and names each side's conditions.
+#[test]
+fn compare_says_when_no_flight_condition_is_in_common() {
+    let navion = format!("{}/namelists/navion.dcm", env!("CARGO_MANIFEST_DIR"));
+    let out = bin()
+        .args(["compare", &example(), &navion])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    for says in [
+        "no page of the reference has a counterpart in ours",
+        "ours has case 1: Mach 0.06 altitude 0, Mach 0.09 altitude 0",
+        "the reference has case 1: Mach 0.158 altitude 0",
+    ] {
+        assert!(stderr.contains(says), "{says}: {stderr}");
+    }
+    let out = bin()
+        .args(["compare", &example(), &example()])
+        .output()
+        .unwrap();
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// Each rule flag on a deck it changes: `--X original` differs from the default, `--X`
 /// with the default's value does not. (`--original` sets every rule without reading the
 /// flags, so only this catches a flag mapped to the wrong rule.)
