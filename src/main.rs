@@ -421,25 +421,50 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
     }
 }
 
+/// What a result was read from.
+#[derive(Clone, Copy, PartialEq)]
+enum Source {
+    /// A deck, run here under the rules given.
+    Deck,
+    /// A JSON of `run` or `import`.
+    Json,
+    /// A listing of ours (`run --format for006`).
+    Listing,
+    /// A listing of the original program.
+    OriginalListing,
+}
+
+/// A result in the JSON shape of `run`, the file it was read from and what that file is.
+struct Read {
+    value: serde_json::Value,
+    name: String,
+    source: Source,
+}
+
 /// A result in the JSON shape of `run`, from a deck, a JSON file of `run` or `import`, or a
 /// listing. Any other file is refused (exit 2), as a deck with errors is (its diagnostics
 /// printed; exit 1).
-fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode> {
+fn results_json(path: &Path, rules: Rules) -> Result<Read, ExitCode> {
     let bytes = std::fs::read(path).map_err(|e| {
         eprintln!("datcom-rs: cannot read {}: {e}", path.display());
         ExitCode::from(2)
     })?;
     let text = String::from_utf8_lossy(&bytes);
     let name = path.display().to_string();
-    let json = if text.trim_start().starts_with('{') {
-        text.into_owned()
+    let (json, source) = if text.trim_start().starts_with('{') {
+        (text.into_owned(), Source::Json)
     } else if datcom::report::legacy::is_listing(&text) {
         // A listing without a single page of the original's (it stopped at input errors) is
         // no reference: read as a deck, its echo of the input cards would be run here and
         // agree with ours. Our text report is refused (read as a listing, its numbers came
         // out shifted); a listing whose pages are none that are read has nothing to compare.
-        use datcom::report::legacy::NotImported;
-        match datcom::report::json::import_listing(&text, &name) {
+        use datcom::report::legacy::{is_original_listing, NotImported};
+        let source = if is_original_listing(&text) {
+            Source::OriginalListing
+        } else {
+            Source::Listing
+        };
+        let json = match datcom::report::json::import_listing(&text, &name) {
             Ok(json) => json,
             Err(e @ NotImported::NoPageRead { .. }) => {
                 eprintln!("datcom-rs: {name}: {e}; nothing of it is compared");
@@ -449,7 +474,8 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
                 eprintln!("datcom-rs: {name}: {e}; nothing to compare");
                 return Err(ExitCode::from(2));
             }
-        }
+        };
+        (json, source)
     } else {
         let deck = rules.apply(datcom::read_deck(&text, &name));
         // A file of which no case is read (a README, a TOML or CSV file) is no deck: run, it
@@ -461,7 +487,10 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
             return Err(ExitCode::from(2));
         }
         let deck = without_errors(deck, path)?;
-        datcom::report::json::to_string(&datcom::run(&deck))
+        (
+            datcom::report::json::to_string(&datcom::run(&deck)),
+            Source::Deck,
+        )
     };
     let value: serde_json::Value = serde_json::from_str(&json).map_err(|e| {
         eprintln!("datcom-rs: {}: not a result: {e}", path.display());
@@ -471,19 +500,36 @@ fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode
         eprintln!("datcom-rs: {name}: a JSON, but not of `run` or `import` (no \"cases\")");
         return Err(ExitCode::from(2));
     }
-    Ok(value)
+    Ok(Read {
+        value,
+        name,
+        source,
+    })
 }
 
 /// The agreement of `ours` with `reference` (`compare`, `report` against a result), saying on
-/// standard error why when no page of the reference has a counterpart in ours.
+/// standard error why when no page of the reference has a counterpart in ours, and hinting at
+/// --original when a deck run under the library's rules meets a listing of the original.
 fn agreement(
-    ours: &serde_json::Value,
-    reference: &serde_json::Value,
+    ours: &Read,
+    reference: &Read,
+    rules: Rules,
 ) -> Vec<datcom::report::compare::ColumnAgreement> {
-    if let Some(why) = datcom::report::compare::nothing_in_common(ours, reference) {
+    for (deck, listing) in [(ours, reference), (reference, ours)] {
+        if deck.source == Source::Deck
+            && listing.source == Source::OriginalListing
+            && !rules.original
+        {
+            eprintln!(
+                "hint: {} is a listing of the original program; --original runs {} under the original's rules (its section Reynolds numbers, NACA readings, ...: docs/differences.md), as its numbers were computed",
+                listing.name, deck.name
+            );
+        }
+    }
+    if let Some(why) = datcom::report::compare::nothing_in_common(&ours.value, &reference.value) {
         eprintln!("datcom-rs: {why}");
     }
-    datcom::report::compare::compare(ours, reference)
+    datcom::report::compare::compare(&ours.value, &reference.value)
 }
 
 fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -> ExitCode {
@@ -491,7 +537,7 @@ fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -
         (Ok(a), Ok(b)) => (a, b),
         (Err(c), _) | (_, Err(c)) => return c,
     };
-    let rows = agreement(&a, &b);
+    let rows = agreement(&a, &b, rules);
     let text = match format {
         CompareFormat::Text => datcom::report::compare::to_text(&rows),
         CompareFormat::Json => serde_json::to_string_pretty(&rows).unwrap_or_default(),
@@ -543,7 +589,7 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, rules: Rules) -> 
             (Ok(a), Ok(b)) => (a, b),
             (Err(c), _) | (_, Err(c)) => return c,
         };
-        let rows = agreement(&a, &b);
+        let rows = agreement(&a, &b, rules);
         match format {
             ReportFormat::Text => datcom::report::compare::to_text(&rows),
             ReportFormat::Markdown => agreement_table(&rows, true),

@@ -100,6 +100,12 @@ pub fn is_listing(text: &str) -> bool {
     LISTING_MARKS.iter().any(|m| text.contains(m))
 }
 
+/// Whether a listing is the original program's: it opens with its disclaimer and has its
+/// input-checking page, which ours (`run --format for006`) does not print.
+pub fn is_original_listing(text: &str) -> bool {
+    LISTING_MARKS[1..3].iter().any(|m| text.contains(m))
+}
+
 /// Whether a listing has any page of results (the original's page title, which a listing
 /// that stopped at input errors lacks; every listing has the CONERR page).
 pub fn has_result_pages(text: &str) -> bool {
