@@ -281,14 +281,17 @@ enum Command {
         #[arg(long, default_value_t = 50)]
         points: usize,
     },
-    /// Read a listing of the original program (for006.dat) into the JSON of `run`.
+    /// Read a listing of the original program (for006.dat), or of `run --format for006`, into
+    /// the JSON of `run`. A file with nothing to read (the text report of `run`, a file that
+    /// is no listing, a listing without a page read) is refused with exit code 2.
     Import {
         listing: PathBuf,
         #[arg(long, value_enum, default_value = "json")]
         format: ParseFormat,
     },
     /// Agreement between two results, coefficient by coefficient, worst first. Each of OURS
-    /// and REFERENCE is a deck (run here), a JSON of `run` or `import`, or a listing.
+    /// and REFERENCE is a deck (run here), a JSON of `run` or `import`, or a listing; any other
+    /// file is refused (exit 2), and a deck with errors too, with its diagnostics (exit 1).
     Compare {
         ours: PathBuf,
         reference: PathBuf,
@@ -349,7 +352,11 @@ fn load(path: &Path) -> Result<datcom::Deck, ExitCode> {
 /// A deck read under `rules` with its diagnostics printed; exit 2 when unreadable, 1 when it
 /// has errors (the commands that need a whole deck refuse one with errors).
 fn load_without_errors(path: &Path, rules: Rules) -> Result<datcom::Deck, ExitCode> {
-    let d = rules.apply(load(path)?);
+    without_errors(rules.apply(load(path)?), path)
+}
+
+/// A deck with its diagnostics printed (as `run` prints them); exit 1 when it has errors.
+fn without_errors(d: datcom::Deck, path: &Path) -> Result<datcom::Deck, ExitCode> {
     print_diagnostics(&d, false, &mut std::io::stderr().lock());
     if d.has_errors() {
         eprintln!(
@@ -415,35 +422,115 @@ fn emit(text: &str, deck: &Path, ext: &str, output: Option<&Path>) -> ExitCode {
     }
 }
 
-/// A result in the JSON shape of `run`, from a deck, a JSON file or a listing.
-fn results_json(path: &Path, rules: Rules) -> Result<serde_json::Value, ExitCode> {
+/// What a result was read from.
+#[derive(Clone, Copy, PartialEq)]
+enum Source {
+    /// A deck, run here under the rules given.
+    Deck,
+    /// A JSON of `run` or `import`.
+    Json,
+    /// A listing of ours (`run --format for006`).
+    Listing,
+    /// A listing of the original program.
+    OriginalListing,
+}
+
+/// A result in the JSON shape of `run`, the file it was read from and what that file is.
+struct Read {
+    value: serde_json::Value,
+    name: String,
+    source: Source,
+}
+
+/// A result in the JSON shape of `run`, from a deck, a JSON file of `run` or `import`, or a
+/// listing. Any other file is refused (exit 2), as a deck with errors is (its diagnostics
+/// printed; exit 1).
+fn results_json(path: &Path, rules: Rules) -> Result<Read, ExitCode> {
     let bytes = std::fs::read(path).map_err(|e| {
         eprintln!("datcom-rs: cannot read {}: {e}", path.display());
         ExitCode::from(2)
     })?;
     let text = String::from_utf8_lossy(&bytes);
     let name = path.display().to_string();
-    let json = if text.trim_start().starts_with('{') {
-        text.into_owned()
+    let (json, source) = if text.trim_start().starts_with('{') {
+        (text.into_owned(), Source::Json)
     } else if datcom::report::legacy::is_listing(&text) {
         // A listing without a single page of the original's (it stopped at input errors) is
         // no reference: read as a deck, its echo of the input cards would be run here and
-        // agree with ours.
-        if !datcom::report::legacy::has_result_pages(&text) {
+        // agree with ours. Our text report is refused (read as a listing, its numbers came
+        // out shifted); a listing whose pages are none that are read has nothing to compare.
+        use datcom::report::legacy::{is_original_listing, NotImported};
+        let source = if is_original_listing(&text) {
+            Source::OriginalListing
+        } else {
+            Source::Listing
+        };
+        let json = match datcom::report::json::import_listing(&text, &name) {
+            Ok(json) => json,
+            Err(e @ NotImported::NoPageRead { .. }) => {
+                eprintln!("datcom-rs: {name}: {e}; nothing of it is compared");
+                datcom::report::json::listing_to_string(&text, &name)
+            }
+            Err(e) => {
+                eprintln!("datcom-rs: {name}: {e}; nothing to compare");
+                return Err(ExitCode::from(2));
+            }
+        };
+        (json, source)
+    } else {
+        let deck = rules.apply(datcom::read_deck(&text, &name));
+        // A file of which no case is read (a README, a TOML or CSV file) is no deck: run, it
+        // compared as nothing with exit code 0.
+        if deck.cases.is_empty() {
             eprintln!(
-                "datcom-rs: {name}: a listing of the original program without any result page (it stopped before computing: the error lines of its CONERR page say why); nothing to compare"
+                "datcom-rs: {name}: neither a deck (no case is read from it; `datcom-rs check {name}` says why), a JSON of `run` or `import`, nor a listing"
             );
             return Err(ExitCode::from(2));
         }
-        datcom::report::json::listing_to_string(&text, &name)
-    } else {
-        let deck = rules.apply(datcom::read_deck(&text, &name));
-        datcom::report::json::to_string(&datcom::run(&deck))
+        let deck = without_errors(deck, path)?;
+        (
+            datcom::report::json::to_string(&datcom::run(&deck)),
+            Source::Deck,
+        )
     };
-    serde_json::from_str(&json).map_err(|e| {
+    let value: serde_json::Value = serde_json::from_str(&json).map_err(|e| {
         eprintln!("datcom-rs: {}: not a result: {e}", path.display());
         ExitCode::from(2)
+    })?;
+    if !value["cases"].is_array() {
+        eprintln!("datcom-rs: {name}: a JSON, but not of `run` or `import` (no \"cases\")");
+        return Err(ExitCode::from(2));
+    }
+    Ok(Read {
+        value,
+        name,
+        source,
     })
+}
+
+/// The agreement of `ours` with `reference` (`compare`, `report` against a result), saying on
+/// standard error why when no page of the reference has a counterpart in ours, and hinting at
+/// --original when a deck run under the library's rules meets a listing of the original.
+fn agreement(
+    ours: &Read,
+    reference: &Read,
+    rules: Rules,
+) -> Vec<datcom::report::compare::ColumnAgreement> {
+    for (deck, listing) in [(ours, reference), (reference, ours)] {
+        if deck.source == Source::Deck
+            && listing.source == Source::OriginalListing
+            && !rules.original
+        {
+            eprintln!(
+                "hint: {} is a listing of the original program; --original runs {} under the original's rules (its section Reynolds numbers, NACA readings, ...: docs/differences.md), as its numbers were computed",
+                listing.name, deck.name
+            );
+        }
+    }
+    if let Some(why) = datcom::report::compare::nothing_in_common(&ours.value, &reference.value) {
+        eprintln!("datcom-rs: {why}");
+    }
+    datcom::report::compare::compare(&ours.value, &reference.value)
 }
 
 fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -> ExitCode {
@@ -451,7 +538,7 @@ fn compare(ours: &Path, reference: &Path, format: CompareFormat, rules: Rules) -
         (Ok(a), Ok(b)) => (a, b),
         (Err(c), _) | (_, Err(c)) => return c,
     };
-    let rows = datcom::report::compare::compare(&a, &b);
+    let rows = agreement(&a, &b, rules);
     let text = match format {
         CompareFormat::Text => datcom::report::compare::to_text(&rows),
         CompareFormat::Json => serde_json::to_string_pretty(&rows).unwrap_or_default(),
@@ -503,7 +590,7 @@ fn report(deck: &Path, reference: &Path, format: ReportFormat, rules: Rules) -> 
             (Ok(a), Ok(b)) => (a, b),
             (Err(c), _) | (_, Err(c)) => return c,
         };
-        let rows = datcom::report::compare::compare(&a, &b);
+        let rows = agreement(&a, &b, rules);
         match format {
             ReportFormat::Text => datcom::report::compare::to_text(&rows),
             ReportFormat::Markdown => agreement_table(&rows, true),
@@ -949,12 +1036,18 @@ fn main() -> ExitCode {
                     return ExitCode::from(2);
                 }
             };
+            let name = listing.display().to_string();
+            // A text that would import as nothing, or as invented numbers (our text report,
+            // a deck, any other file), is refused.
+            let json = match datcom::report::json::import_listing(&text, &name) {
+                Ok(json) => json,
+                Err(e) => {
+                    eprintln!("datcom-rs: {name}: {e}; nothing imported");
+                    return ExitCode::from(2);
+                }
+            };
             match format {
                 ParseFormat::Json => {
-                    let json = datcom::report::json::listing_to_string(
-                        &text,
-                        &listing.display().to_string(),
-                    );
                     let _ = writeln!(std::io::stdout().lock(), "{json}");
                 }
             }

@@ -286,6 +286,196 @@ fn a_listing_without_results_is_refused_not_read_as_a_deck() {
     );
 }
 
+/// `run`'s default text output was read back by `import`, `compare` and `report` as a listing,
+/// its static table a column off: CL, CM and CLA null, CYB = 1 and CLB = -9.941 invented, 0/11
+/// agreeing, exit 0. It is refused with a pointer to the formats that read back; so is any
+/// file that is no listing, and a listing with no page that is read (exit 2: a file error).
+#[test]
+fn the_text_report_and_other_files_are_not_imported() {
+    let dir = temp_dir("text-report");
+    let deck = format!("{}/namelists/navion.dcm", env!("CARGO_MANIFEST_DIR"));
+    let run = |format: &str| {
+        let out = bin()
+            .args(["run", &deck, "--format", format])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "run --format {format}");
+        let path = dir.join(format!("navion.{format}"));
+        std::fs::write(&path, &out.stdout).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let (text, listing, csv) = (run("text"), run("for006"), run("csv"));
+    for args in [
+        vec!["import", &text],
+        vec!["compare", &text, &deck],
+        vec!["compare", &deck, &text],
+        vec!["report", &deck, "--reference", &text],
+    ] {
+        let out = bin().args(&args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("text report") && stderr.contains("--format for006"),
+            "{args:?}: {stderr}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    let jet = dir.join("jet.dat");
+    std::fs::write(
+        &jet,
+        " THIS SOFTWARE AND ANY ACCOMPANYING DOCUMENTATION
+         1                          AUTOMATED STABILITY AND CONTROL METHODS PER APRIL 1976 VERSION OF DATCOM
+                                                              SPECIAL CONTROL METHODS
+",
+    )
+    .unwrap();
+    let readme = format!("{}/README.md", env!("CARGO_MANIFEST_DIR"));
+    for (file, says) in [
+        (csv.as_str(), "not a listing"),
+        (readme.as_str(), "not a listing"),
+        (jet.to_str().unwrap(), "SPECIAL CONTROL METHODS"),
+    ] {
+        let out = bin().args(["import", file]).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{file}: {stderr}");
+        assert!(stderr.contains(says), "{file}: {stderr}");
+        assert!(out.stdout.is_empty(), "{file}");
+    }
+    // The listing of the same deck reads back, and agrees with the deck everywhere.
+    let out = bin().args(["compare", &listing, &deck]).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.lines().count() > 10, "{stdout}");
+    for line in stdout.lines().skip(1) {
+        assert!(line.contains(" 100.0%"), "{line}");
+    }
+}
+
+/// `compare` took any file as a deck: a README, a TOML or CSV file, a JSON that is no result
+/// compared as nothing, exit 0; a deck with errors was run without a word. Now the first is
+/// refused (exit 2) and the second prints its diagnostics and is refused as the commands that
+/// need a whole deck refuse it (exit 1).
+#[test]
+fn compare_refuses_what_is_no_result_and_a_deck_with_errors() {
+    let dir = temp_dir("compare-files");
+    let root = env!("CARGO_MANIFEST_DIR");
+    let csv = dir.join("uav.csv");
+    let out = bin()
+        .args(["run", &example(), "--format", "csv"])
+        .output()
+        .unwrap();
+    std::fs::write(&csv, &out.stdout).unwrap();
+    let not_result = dir.join("other.json");
+    std::fs::write(&not_result, "{\"a\": 1}\n").unwrap();
+    for (file, says) in [
+        (format!("{root}/README.md"), "neither a deck"),
+        (format!("{root}/Cargo.toml"), "neither a deck"),
+        (csv.to_str().unwrap().to_string(), "neither a deck"),
+        (
+            not_result.to_str().unwrap().to_string(),
+            "not of `run` or `import`",
+        ),
+    ] {
+        for args in [
+            ["compare", &example(), &file],
+            ["compare", &file, &example()],
+        ] {
+            let out = bin().args(args).output().unwrap();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+            assert!(stderr.contains(says), "{args:?}: {stderr}");
+            assert!(out.stdout.is_empty(), "{args:?}");
+        }
+    }
+    let misspelled = dir.join("m1.dcm");
+    std::fs::write(
+        &misspelled,
+        std::fs::read_to_string(example())
+            .unwrap()
+            .replace("SSPNE=", "SSPNEE="),
+    )
+    .unwrap();
+    let out = bin()
+        .args(["compare", &example(), misspelled.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error [VTPLNF SSPNEE]: unknown variable SSPNEE"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("m1.dcm has"), "{stderr}");
+    assert!(out.stdout.is_empty());
+}
+
+/// Two results with no flight condition in common showed every row missing without a word;
+/// now `compare` says that no page was paired and names each side's conditions.
+#[test]
+fn compare_says_when_no_flight_condition_is_in_common() {
+    let navion = format!("{}/namelists/navion.dcm", env!("CARGO_MANIFEST_DIR"));
+    let out = bin()
+        .args(["compare", &example(), &navion])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    for says in [
+        "no page of the reference has a counterpart in ours",
+        "ours has case 1: Mach 0.06 altitude 0, Mach 0.09 altitude 0",
+        "the reference has case 1: Mach 0.158 altitude 0",
+    ] {
+        assert!(stderr.contains(says), "{says}: {stderr}");
+    }
+    let out = bin()
+        .args(["compare", &example(), &example()])
+        .output()
+        .unwrap();
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// A deck compared with a listing of the original under the library's rules agrees on 0-15 %
+/// of most columns (100 % with --original), and nothing said so: now a hint names --original.
+/// Not with --original, nor against our own listing (`--format for006`, which has neither the
+/// original's disclaimer nor its input-checking page).
+#[test]
+fn compare_with_a_listing_of_the_original_hints_at_original() {
+    let dir = temp_dir("original-hint");
+    let ours = dir.join("ours.out");
+    let out = bin()
+        .args(["run", &example(), "--format", "for006"])
+        .output()
+        .unwrap();
+    std::fs::write(&ours, &out.stdout).unwrap();
+    let original = dir.join("for006.dat");
+    std::fs::write(
+        &original,
+        [
+            &b" THIS SOFTWARE AND ANY ACCOMPANYING DOCUMENTATION\n"[..],
+            &out.stdout,
+        ]
+        .concat(),
+    )
+    .unwrap();
+    let hint = |args: &[&str]| {
+        let out = bin().args(args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
+        stderr.contains("hint:") && stderr.contains("--original")
+    };
+    let (original, ours) = (original.to_str().unwrap(), ours.to_str().unwrap());
+    assert!(hint(&["compare", &example(), original]));
+    assert!(hint(&["compare", original, &example()]));
+    assert!(hint(&["report", &example(), "--reference", original]));
+    assert!(!hint(&["compare", &example(), original, "--original"]));
+    assert!(!hint(&["compare", &example(), ours]));
+    assert!(!hint(&["compare", ours, original]));
+}
+
 /// Each rule flag on a deck it changes: `--X original` differs from the default, `--X`
 /// with the default's value does not. (`--original` sets every rule without reading the
 /// flags, so only this catches a flag mapped to the wrong rule.)

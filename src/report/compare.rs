@@ -228,6 +228,123 @@ fn effects(page: &Value) -> Effects {
         .unwrap_or(Effects::None)
 }
 
+/// A page's configuration and flight condition (Mach number and altitude).
+type PageKey = (String, Option<f64>, Option<f64>);
+
+fn page_key(c: &Value) -> PageKey {
+    (
+        c["configuration"].as_str().unwrap_or("").to_string(),
+        c["mach"].as_f64(),
+        c["altitude"].as_f64(),
+    )
+}
+
+fn same_page(p: &PageKey, q: &PageKey) -> bool {
+    let near = |a: Option<f64>, b: Option<f64>| match (a, b) {
+        (Some(a), Some(b)) => (a - b).abs() <= 1e-3 * a.abs().max(1.0),
+        (None, None) => true,
+        _ => false,
+    };
+    p.0 == q.0 && near(p.1, q.1) && near(p.2, q.2)
+}
+
+/// For each reference page of a case (`cb`), the index of our page (`ca`) paired with it:
+/// the one of the same configuration and flight condition (Mach and altitude); the order of
+/// configuration pages differs between programs under BUILD.
+fn counterparts(ca: &[Value], cb: &[Value]) -> Vec<Option<usize>> {
+    // Pages with power or ground effects included are paired after the others, so that a
+    // page without them (printed before or after them) finds its counterpart first.
+    let mut counterpart: Vec<Option<usize>> = vec![None; cb.len()];
+    let mut used = vec![false; ca.len()];
+    for with_effects in [false, true] {
+        for (j, y) in cb.iter().enumerate() {
+            if (effects(y) != Effects::None) != with_effects {
+                continue;
+            }
+            let ky = page_key(y);
+            if let Some(i) = (0..ca.len()).find(|&i| !used[i] && same_page(&page_key(&ca[i]), &ky))
+            {
+                used[i] = true;
+                counterpart[j] = Some(i);
+            }
+        }
+    }
+    counterpart
+}
+
+fn cases(v: &Value) -> &[Value] {
+    v["cases"].as_array().map_or(&[], Vec::as_slice)
+}
+
+fn pages(case: &Value) -> &[Value] {
+    case["conditions"].as_array().map_or(&[], Vec::as_slice)
+}
+
+/// A side's cases and their pages, for [`nothing_in_common`]: per case its flight conditions
+/// (Mach number, altitude) and configurations, each once.
+fn describe(v: &Value) -> String {
+    const SHOWN: usize = 8;
+    let number = |x: Option<f64>| x.map_or("none".to_string(), |x| format!("{x}"));
+    let list = |items: Vec<String>| {
+        let more = items.len().saturating_sub(SHOWN);
+        let mut s = items.into_iter().take(SHOWN).collect::<Vec<_>>().join(", ");
+        if more > 0 {
+            s.push_str(&format!(" and {more} more"));
+        }
+        s
+    };
+    let described: Vec<String> = cases(v)
+        .iter()
+        .enumerate()
+        .map(|(k, case)| {
+            let mut conditions: Vec<String> = Vec::new();
+            let mut configurations: Vec<String> = Vec::new();
+            for page in pages(case) {
+                let (configuration, mach, altitude) = page_key(page);
+                let condition = format!("Mach {} altitude {}", number(mach), number(altitude));
+                if !conditions.contains(&condition) {
+                    conditions.push(condition);
+                }
+                if !configurations.contains(&configuration) {
+                    configurations.push(configuration);
+                }
+            }
+            if conditions.is_empty() {
+                return format!("case {}: no page", k + 1);
+            }
+            format!(
+                "case {}: {} ({})",
+                k + 1,
+                list(conditions),
+                list(configurations)
+            )
+        })
+        .collect();
+    if described.is_empty() {
+        "no case".to_string()
+    } else {
+        described.join("; ")
+    }
+}
+
+/// When the reference has pages and none of them has a counterpart in `ours` (every number
+/// would count as missing), why: the pages are paired case by case by configuration, Mach
+/// number and altitude, and each side's are named. `None` when a page is in common.
+pub fn nothing_in_common(ours: &Value, reference: &Value) -> Option<String> {
+    let reference_pages: usize = cases(reference).iter().map(|c| pages(c).len()).sum();
+    let paired = cases(ours)
+        .iter()
+        .zip(cases(reference))
+        .any(|(a, b)| counterparts(pages(a), pages(b)).iter().any(Option::is_some));
+    (reference_pages > 0 && !paired).then(|| {
+        format!(
+            "no page of the reference has a counterpart in ours (pages are paired case by case, by configuration, Mach number and altitude): ours has {}; the reference has {}",
+            describe(ours),
+            describe(reference)
+        )
+    })
+}
+
 /// Compares every coefficient of `ours` with `reference` (both in the JSON shape of `run`),
 /// case by case and condition by condition in order; worst agreement first. A reference page
 /// with power or ground effects that ours does not include has the numbers they change
@@ -239,46 +356,9 @@ pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
         .chain(DOWNWASH.iter())
         .map(|c| ColumnAgreement::new(c))
         .collect();
-    let empty = Vec::new();
-    let cases = |v: &Value| v["cases"].as_array().cloned().unwrap_or_default();
-    for (ci, (a, b)) in cases(ours).iter().zip(cases(reference).iter()).enumerate() {
-        let ca = a["conditions"].as_array().unwrap_or(&empty);
-        let cb = b["conditions"].as_array().unwrap_or(&empty);
-        // Each reference entry is paired with our entry of the same configuration and flight
-        // condition (Mach and altitude); the order of configuration pages differs between
-        // programs under BUILD.
-        let key = |c: &Value| {
-            (
-                c["configuration"].as_str().unwrap_or("").to_string(),
-                c["mach"].as_f64(),
-                c["altitude"].as_f64(),
-            )
-        };
-        let same = |p: &(String, Option<f64>, Option<f64>),
-                    q: &(String, Option<f64>, Option<f64>)| {
-            let near = |a: Option<f64>, b: Option<f64>| match (a, b) {
-                (Some(a), Some(b)) => (a - b).abs() <= 1e-3 * a.abs().max(1.0),
-                (None, None) => true,
-                _ => false,
-            };
-            p.0 == q.0 && near(p.1, q.1) && near(p.2, q.2)
-        };
-        // Pages with power or ground effects included are paired after the others, so that a
-        // page without them (printed before or after them) finds its counterpart first.
-        let mut counterpart: Vec<Option<usize>> = vec![None; cb.len()];
-        let mut used = vec![false; ca.len()];
-        for with_effects in [false, true] {
-            for (j, y) in cb.iter().enumerate() {
-                if (effects(y) != Effects::None) != with_effects {
-                    continue;
-                }
-                let ky = key(y);
-                if let Some(i) = (0..ca.len()).find(|&i| !used[i] && same(&key(&ca[i]), &ky)) {
-                    used[i] = true;
-                    counterpart[j] = Some(i);
-                }
-            }
-        }
+    for (ci, (a, b)) in cases(ours).iter().zip(cases(reference)).enumerate() {
+        let (ca, cb) = (pages(a), pages(b));
+        let counterpart = counterparts(ca, cb);
         // Without a counterpart every reference number of the entry is missing on our side.
         let pairs = cb
             .iter()
@@ -452,6 +532,28 @@ mod tests {
             0.010
         ));
         assert!(!part_agrees("planforms", "[0].exposed.area", 0.0105, 0.010));
+    }
+
+    #[test]
+    fn no_page_in_common_is_explained() {
+        let a: Value = serde_json::from_str(r#"{"cases":[{"conditions":[{"configuration":"W","mach":0.2,"altitude":0.0,"static":{"alpha":[0],"CL":[0.1]}},{"configuration":"W","mach":0.3,"altitude":0.0,"static":{"alpha":[0],"CL":[0.1]}}]}]}"#).unwrap();
+        let b: Value = serde_json::from_str(r#"{"cases":[{"conditions":[{"configuration":"W","mach":0.6,"altitude":1000.0,"static":{"alpha":[0],"CL":[0.1]}}]}]}"#).unwrap();
+        let why = nothing_in_common(&a, &b).expect("nothing in common");
+        assert!(
+            why.contains("ours has case 1: Mach 0.2 altitude 0, Mach 0.3 altitude 0 (W)"),
+            "{why}"
+        );
+        assert!(
+            why.contains("the reference has case 1: Mach 0.6 altitude 1000 (W)"),
+            "{why}"
+        );
+        assert_eq!(nothing_in_common(&a, &a), None);
+        // No reference page: nothing to explain (the table says there is nothing to compare).
+        let none: Value = serde_json::from_str(r#"{"cases":[]}"#).unwrap();
+        assert_eq!(nothing_in_common(&a, &none), None);
+        assert!(nothing_in_common(&none, &b)
+            .expect("ours has no case")
+            .contains("ours has no case"));
     }
 
     #[test]

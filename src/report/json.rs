@@ -310,7 +310,13 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
             .iter()
             .enumerate()
             .map(|(i, c)| {
-                let unit = |k: usize| c.units.get(k).cloned().unwrap_or_default();
+                let unit = |field: &str| {
+                    c.units
+                        .iter()
+                        .find(|(f, _)| *f == field)
+                        .map(|(_, u)| u.clone())
+                        .unwrap_or_default()
+                };
                 let first = c.conditions.first();
                 let field =
                     |name: &str| first.and_then(|k| k.row.field(name)).and_then(|f| f.value);
@@ -318,12 +324,12 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
                     case: i + 1,
                     caseid: c.caseid.clone(),
                     units: UnitsJson {
-                        length: unit(0),
-                        velocity: unit(1),
-                        pressure: unit(2),
-                        temperature: unit(3),
-                        reynolds_per_length: unit(4),
-                        area: unit(5),
+                        length: unit("altitude"),
+                        velocity: unit("velocity"),
+                        pressure: unit("pressure"),
+                        temperature: unit("temperature"),
+                        reynolds_per_length: unit("reynolds_per_length"),
+                        area: unit("area"),
                     },
                     sections: Default::default(),
                     reference: ReferenceJson {
@@ -407,9 +413,19 @@ pub fn from_listing(cases: &[super::legacy::ListedCase], file: &str) -> ResultsJ
     }
 }
 
-/// Pretty JSON text of a listing of the original program.
-pub fn listing_to_string(listing: &str, file: &str) -> String {
-    let cases = super::legacy::read_listing(listing);
-    serde_json::to_string_pretty(&from_listing(&cases, file))
+fn listed_to_string(cases: &[super::legacy::ListedCase], file: &str) -> String {
+    serde_json::to_string_pretty(&from_listing(cases, file))
         .unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+}
+
+/// Pretty JSON text of a listing of the original program (whatever [`super::legacy::read_listing`]
+/// reads in it: nothing from a text that is no listing).
+pub fn listing_to_string(listing: &str, file: &str) -> String {
+    listed_to_string(&super::legacy::read_listing(listing), file)
+}
+
+/// Pretty JSON text of a listing, as `datcom-rs import` writes it: an error for a text that
+/// would import as nothing or as invented numbers ([`super::legacy::import`]).
+pub fn import_listing(listing: &str, file: &str) -> Result<String, super::legacy::NotImported> {
+    super::legacy::import(listing).map(|cases| listed_to_string(&cases, file))
 }

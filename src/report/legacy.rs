@@ -54,6 +54,24 @@ fn slice(line: &str, a: usize, b: usize) -> String {
         .to_string()
 }
 
+/// The unit names of a FLIGHT CONDITIONS header's unit line, each read in the columns of its
+/// field ([`FIELDS`]), with the blanks the original leaves inside a name dropped after a slash
+/// (`N/ M**2` is `N/M**2`, `1/ M` is `1/M`; `DEG R` keeps its blank): (field, unit) for each
+/// field with a unit printed above it.
+pub fn unit_names(line: &str) -> Vec<(&'static str, String)> {
+    FIELDS
+        .iter()
+        .filter_map(|(name, a, b)| {
+            let words: Vec<String> = slice(line, *a, *b)
+                .split_whitespace()
+                .map(str::to_string)
+                .collect();
+            let unit = words.join(" ").replace("/ ", "/");
+            (!unit.is_empty()).then_some((*name, unit))
+        })
+        .collect()
+}
+
 /// Unit in the last printed digit of a fixed or exponent field (`1.9676E+03` -> 0.1).
 pub fn last_digit_unit(text: &str) -> f64 {
     let t = text.trim();
@@ -101,10 +119,75 @@ pub fn is_listing_line(line: &str) -> bool {
     line.len() >= SHORTEST_MARK && is_listing(line)
 }
 
+/// Whether a listing is the original program's: it opens with its disclaimer and has its
+/// input-checking page, which ours (`run --format for006`) does not print.
+pub fn is_original_listing(text: &str) -> bool {
+    LISTING_MARKS[1..3].iter().any(|m| text.contains(m))
+}
+
 /// Whether a listing has any page of results (the original's page title, which a listing
 /// that stopped at input errors lacks; every listing has the CONERR page).
 pub fn has_result_pages(text: &str) -> bool {
     text.contains(LISTING_MARKS[0])
+}
+
+/// Why a text is not imported as a listing ([`import`]).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum NotImported {
+    /// datcom-rs's own text report (`run`'s default format): its static table is not in the
+    /// listing's columns and its cases are not marked, so it cannot be read back reliably.
+    #[error("this is datcom-rs's text report (the default format of `run`), which is not read back (its static table is not in the listing's columns); write the results with `run --format json` or `run --format for006`")]
+    TextReport,
+    /// No page title, disclaimer, input-checking page or input-card list of the original.
+    #[error("not a listing of the original program (for006.dat): none of its page titles or input-card lists")]
+    NotAListing,
+    /// A listing of the original that stopped before computing (input errors).
+    #[error("a listing of the original program without any result page (it stopped before computing: the error lines of its CONERR page say why)")]
+    NoResultPage,
+    /// Result pages, none of a kind the reader reads (static, dynamic, PART).
+    #[error("a listing of the original program whose result pages{} are none of the pages read (CHARACTERISTICS AT ANGLE OF ATTACK AND IN SIDESLIP, DYNAMIC DERIVATIVES, CONFIGURATION AUXILIARY AND PARTIAL OUTPUT)", if kinds.is_empty() { String::new() } else { format!(" ({})", kinds.join("; ")) })]
+    NoPageRead {
+        /// The kinds of its result pages (the line under each page title), each once.
+        kinds: Vec<String>,
+    },
+}
+
+/// Reads a listing of the original program (or ours, `--format for006`) as [`read_listing`]
+/// does, refusing what would read as nothing or as invented numbers: datcom-rs's text report,
+/// a text that is no listing, a listing without result pages or without a page read.
+pub fn import(text: &str) -> Result<Vec<ListedCase>, NotImported> {
+    let lines = || text.lines().map(str::trim_end);
+    if lines().any(|l| l == super::text::TITLE) {
+        return Err(NotImported::TextReport);
+    }
+    if !is_listing(text) {
+        return Err(NotImported::NotAListing);
+    }
+    if !has_result_pages(text) {
+        return Err(NotImported::NoResultPage);
+    }
+    let cases = read_listing(text);
+    if cases.is_empty() {
+        let all: Vec<&str> = text.lines().collect();
+        let mut kinds: Vec<String> = Vec::new();
+        for (i, l) in all.iter().enumerate() {
+            if !l.contains(LISTING_MARKS[0]) {
+                continue;
+            }
+            // The first line under the title that is not the rest of it (some pages print
+            // `APRIL 1976 VERSION OF DATCOM` on a line of its own).
+            let kind = all[i + 1..]
+                .iter()
+                .map(|k| k.trim())
+                .take(3)
+                .find(|k| !k.is_empty() && !k.contains("VERSION OF DATCOM"));
+            if let Some(kind) = kind.filter(|k| !kinds.iter().any(|x| x == k)) {
+                kinds.push(kind.to_string());
+            }
+        }
+        return Err(NotImported::NoPageRead { kinds });
+    }
+    Ok(cases)
 }
 
 /// Every FLIGHT CONDITIONS row of a listing, with its page kind.
@@ -159,6 +242,24 @@ mod tests {
         assert_eq!(r.field("pressure").unwrap().value, Some(1967.6));
         assert_eq!(r.field("zcg").unwrap().value, Some(-0.47));
         assert!((last_digit_unit("1.9676E+03") - 0.1).abs() < 1e-12);
+    }
+
+    /// Each unit in its field's columns: the original's two-word names (`DEG K`) and the
+    /// blank it leaves after a slash (`N/ M**2`) were split into separate units and read by
+    /// their place in the line (pressure `N/`, temperature `M**2`).
+    #[test]
+    fn reads_the_units_by_column() {
+        let metric = "              M        M/SEC      N/ M**2       DEG K         1/ M                M**2         M         M         M         M";
+        let units = unit_names(metric);
+        let unit = |f: &str| units.iter().find(|(n, _)| *n == f).map(|(_, u)| u.as_str());
+        assert_eq!(unit("mach"), None);
+        assert_eq!(unit("altitude"), Some("M"));
+        assert_eq!(unit("velocity"), Some("M/SEC"));
+        assert_eq!(unit("pressure"), Some("N/M**2"));
+        assert_eq!(unit("temperature"), Some("DEG K"));
+        assert_eq!(unit("reynolds_per_length"), Some("1/M"));
+        assert_eq!(unit("area"), Some("M**2"));
+        assert_eq!(unit("zcg"), Some("M"));
         assert!((last_digit_unit("511.570") - 0.001).abs() < 1e-12);
     }
 }
@@ -291,8 +392,10 @@ pub struct ListedCondition {
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ListedCase {
     pub caseid: Option<String>,
-    /// Unit names of the FLIGHT CONDITIONS header (FT, FT/SEC, LB/FT**2, DEG R, 1/FT, FT**2).
-    pub units: Vec<String>,
+    /// Unit names of the FLIGHT CONDITIONS header by field of [`FIELDS`] (altitude FT,
+    /// velocity FT/SEC, pressure LB/FT**2, temperature DEG R, reynolds_per_length 1/FT, area
+    /// FT**2, ...), read by [`unit_names`].
+    pub units: Vec<(&'static str, String)>,
     pub conditions: Vec<ListedCondition>,
 }
 
@@ -431,10 +534,7 @@ pub fn read_listing(listing: &str) -> Vec<ListedCase> {
             case.caseid = caseid;
         }
         if case.units.is_empty() {
-            case.units = lines
-                .get(fc + 3)
-                .map(|u| u.split_whitespace().map(str::to_string).collect())
-                .unwrap_or_default();
+            case.units = lines.get(fc + 3).map_or_else(Vec::new, |u| unit_names(u));
         }
         let same = |c: &ListedCondition| same_page(c, &configuration, &row);
         // A static page goes with the dynamic page of its configuration, condition and
