@@ -551,14 +551,15 @@ fn read_text(path: &Path) -> Result<String, ExitCode> {
 
 /// The options of `discrepancy`.
 #[derive(clap::Args)]
+// One prediction, from a deck or a table: a missing one is an error naming both options.
+#[command(group(
+    clap::ArgGroup::new("prediction")
+        .args(["model", "predicted"])
+        .required(true)
+))]
 struct DiscrepancyArgs {
     /// A deck whose run is the prediction.
-    #[arg(
-        long,
-        value_name = "DECK",
-        required_unless_present = "predicted",
-        conflicts_with = "predicted"
-    )]
+    #[arg(long, value_name = "DECK")]
     model: Option<PathBuf>,
     /// A prediction table (CSV: alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail).
     #[arg(long, value_name = "PRED.csv")]

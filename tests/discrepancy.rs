@@ -279,6 +279,26 @@ fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("no column alpha_deg"));
 }
 
+/// Regression (review 23): without a prediction the usage error named only `--model`; it
+/// names both ways of giving one.
+#[test]
+fn a_missing_prediction_names_model_and_predicted() {
+    let dir = temp_dir("no-prediction");
+    let measured = dir.join("m.csv");
+    std::fs::write(&measured, "alpha_deg,CL\n0,0.1\n").unwrap();
+    let out = bin()
+        .args(["discrepancy", "--measured"])
+        .arg(&measured)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--model") && err.contains("--predicted"),
+        "{err}"
+    );
+}
+
 /// Issue 8, real data: the NASA Ultra Stick 120 tunnel tables against our DATCOM model
 /// (namelists/ultrastick120.dcm), with the tables' 2° alpha offset removed and below stall
 /// (docs/discrepancy-ultrastick120.md). The workflow names the pitching-moment offset, the
