@@ -232,6 +232,13 @@ fn the_command_line_finds_hidden_drag_in_a_recorded_flight() {
     for key in ["rms_before", "rms_after", "confounded"] {
         assert!(!v[key].is_null(), "no {key} in the JSON");
     }
+    // Regression (review 11): the threshold's value, not its internal name.
+    let criterion = v["criterion"].as_str().unwrap();
+    let threshold = Options::default().min_bic_drop;
+    assert!(
+        criterion.ends_with(&format!("falls by more than {threshold}")),
+        "{criterion}"
+    );
     let svg = std::fs::read_to_string(plots.join("flight-airspeed_mps.svg")).unwrap();
     for label in [
         "recorded",
@@ -242,23 +249,38 @@ fn the_command_line_finds_hidden_drag_in_a_recorded_flight() {
     }
 }
 
-/// A static CSV through the command line: the JSON has the issue's shape and the plots
-/// carry the three series; a missing column is an error naming it.
-#[test]
-fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
+/// Synthetic tunnel data of the example UAV with a hidden parasite drag, as the CSV a user
+/// gives (`alpha_deg,CL,CD,Cm`, plus a `sigma_CD` column of `sigma_cd` when given).
+fn tunnel_csv(seed: u64, sigma_cd: Option<f64>) -> String {
     let m = model();
     let p = &m.prediction;
     let hidden = [(EffectId::ParasiteDrag, typical(EffectId::ParasiteDrag))];
     let refs: Vec<(EffectId, &[f64])> = hidden.iter().map(|(e, v)| (*e, v.as_slice())).collect();
-    let meas = static_measurement(p, &refs, &alphas(p), TUNNEL_NOISE, 5);
-    let dir = temp_dir("static");
-    let mut csv = String::from("alpha_deg,CL,CD,Cm\n");
+    let meas = static_measurement(p, &refs, &alphas(p), TUNNEL_NOISE, seed);
+    let mut csv = String::from("alpha_deg,CL,CD,Cm");
+    csv.push_str(if sigma_cd.is_some() {
+        ",sigma_CD\n"
+    } else {
+        "\n"
+    });
     for (k, a) in meas.alpha_deg.iter().enumerate() {
         let v = |c: &str| meas.values[c][k].unwrap();
-        csv.push_str(&format!("{a},{},{},{}\n", v("CL"), v("CD"), v("Cm")));
+        csv.push_str(&format!("{a},{},{},{}", v("CL"), v("CD"), v("Cm")));
+        match sigma_cd {
+            Some(s) => csv.push_str(&format!(",{s}\n")),
+            None => csv.push('\n'),
+        }
     }
+    csv
+}
+
+/// A static CSV through the command line: the JSON has the issue's shape and the plots
+/// carry the three series; a missing column is an error naming it.
+#[test]
+fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
+    let dir = temp_dir("static");
     let measured = dir.join("tunnel.csv");
-    std::fs::write(&measured, &csv).unwrap();
+    std::fs::write(&measured, tunnel_csv(5, None)).unwrap();
     let v = discrepancy_json(&dir, &measured, &[]);
     let plots = dir.join("plots");
     assert_eq!(v["effects"][0]["id"], "parasite_drag");
@@ -277,6 +299,39 @@ fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no column alpha_deg"));
+}
+
+/// Regression (review 11): with `--sigma` the report said the noise was "given (sigma_CD) at
+/// every row", as if the CSV had that column, and its criterion named the internal
+/// `min_bic_drop` instead of the threshold. Now the source is `--sigma` (a real column is
+/// named as a column) and the criterion gives the value.
+#[test]
+fn the_report_says_where_the_noise_came_from_and_the_threshold() {
+    let dir = temp_dir("sigma-source");
+    let measured = dir.join("tunnel.csv");
+    std::fs::write(&measured, tunnel_csv(5, None)).unwrap();
+    let v = discrepancy_json(
+        &dir,
+        &measured,
+        &["--sigma".as_ref(), "CL=0.005,CD=0.001,Cm=0.002".as_ref()],
+    );
+    for c in ["CL", "CD", "Cm"] {
+        assert_eq!(v["sigma_source"][c], "given by --sigma", "{c}");
+    }
+    let criterion = v["criterion"].as_str().unwrap();
+    let threshold = Options::default().min_bic_drop;
+    assert!(
+        criterion.ends_with(&format!("falls by more than {threshold}"))
+            && !criterion.contains("min_bic_drop"),
+        "{criterion}"
+    );
+    let with_column = dir.join("tunnel-sigma.csv");
+    std::fs::write(&with_column, tunnel_csv(5, Some(0.001))).unwrap();
+    let v = discrepancy_json(&dir, &with_column, &[]);
+    assert_eq!(
+        v["sigma_source"]["CD"],
+        "given by the sigma_CD column at every row"
+    );
 }
 
 /// Regression (review 23): without a prediction the usage error named only `--model`; it

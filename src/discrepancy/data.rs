@@ -1,7 +1,7 @@
 //! Reading the discrepancy workflow's tables (CSV, docs/discrepancy.md) and estimating the
 //! noise of a measured curve.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use serde::Serialize;
 
@@ -21,6 +21,9 @@ pub struct Measurement {
     pub values: BTreeMap<String, Vec<Option<f64>>>,
     /// By coefficient name: the noise standard deviation given per row (`sigma_<coef>`).
     pub sigma: BTreeMap<String, Vec<Option<f64>>>,
+    /// Coefficients whose noise was set for every row by [`Measurement::with_sigma`] (the
+    /// command line's `--sigma`) rather than read from a `sigma_<coef>` column.
+    pub sigma_set_for_all_rows: BTreeSet<String>,
 }
 
 /// A CSV table: header names and rows of optional numbers, with line numbers.
@@ -151,6 +154,7 @@ impl Measurement {
             coefficient.to_string(),
             vec![Some(sigma); self.alpha_deg.len()],
         );
+        self.sigma_set_for_all_rows.insert(coefficient.to_string());
         Ok(self)
     }
 }
@@ -196,6 +200,7 @@ pub fn read_measurement(text: &str, file: &str) -> Result<Measurement, Discrepan
         beta_deg,
         values,
         sigma,
+        sigma_set_for_all_rows: BTreeSet::new(),
     })
 }
 

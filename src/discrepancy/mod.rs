@@ -159,7 +159,8 @@ pub struct Analysis {
     /// Noise standard deviation per coefficient, and where it came from.
     pub sigma: BTreeMap<String, f64>,
     pub sigma_source: BTreeMap<String, String>,
-    pub criterion: &'static str,
+    /// How effects are chosen, with the threshold's value.
+    pub criterion: String,
     /// Every step of the selection with each candidate's fall of BIC.
     pub selection: Vec<Step>,
     pub warnings: Vec<String>,
@@ -703,10 +704,12 @@ fn noise(
             .filter(|&r| given.and_then(|g| g[r]).is_none())
             .collect();
         if unsigned.is_empty() {
-            source.insert(
-                name.to_string(),
-                format!("given (sigma_{name}) at every row"),
-            );
+            let given = if measured.sigma_set_for_all_rows.contains(*name) {
+                "given by --sigma".to_string()
+            } else {
+                format!("given by the sigma_{name} column at every row")
+            };
+            source.insert(name.to_string(), given);
             continue;
         }
         let mut pairs: Vec<(f64, f64)> = measured_rows
@@ -746,7 +749,7 @@ fn noise(
             name.to_string(),
             if rows_given > 0 {
                 format!(
-                    "given (sigma_{name}) at {rows_given} row(s), elsewhere estimated from {how}"
+                    "given by the sigma_{name} column at {rows_given} row(s), elsewhere estimated from {how}"
                 )
             } else {
                 format!("estimated from {how}")
@@ -893,7 +896,10 @@ pub fn analyse_static(
             .filter_map(|(n, s)| Some((n.to_string(), s?)))
             .collect(),
         sigma_source,
-        criterion: "BIC = chi-square + k ln n, added when it falls by more than min_bic_drop",
+        criterion: format!(
+            "BIC = chi-square + k ln n, added when it falls by more than {}",
+            options.min_bic_drop
+        ),
         selection: selection.trace,
         warnings,
     })
