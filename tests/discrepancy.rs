@@ -6,6 +6,7 @@ mod common;
 
 use datcom::discrepancy::{
     analyse_static,
+    data::read_prediction,
     effects::{EffectId, Prediction},
     flight::{analyse_flight, Airframe},
     prediction::{from_deck, DeckModel},
@@ -172,6 +173,10 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     d
 }
 
+fn example_deck() -> String {
+    format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"))
+}
+
 /// `datcom-rs discrepancy` on the example deck with `measured` and `extra` arguments, JSON and
 /// plots written into `dir`: exit 0 asserted, the JSON returned.
 fn discrepancy_json(
@@ -179,10 +184,24 @@ fn discrepancy_json(
     measured: &std::path::Path,
     extra: &[&std::ffi::OsStr],
 ) -> serde_json::Value {
+    let deck = example_deck();
+    discrepancy_output(dir, &["--model".as_ref(), deck.as_ref()], measured, extra).0
+}
+
+/// `datcom-rs discrepancy` with the `prediction` arguments (`--model DECK` or `--predicted
+/// FILE`), `measured` and `extra`, JSON and plots written into `dir`: exit 0 asserted, the
+/// JSON and the standard error returned.
+fn discrepancy_output(
+    dir: &std::path::Path,
+    prediction: &[&std::ffi::OsStr],
+    measured: &std::path::Path,
+    extra: &[&std::ffi::OsStr],
+) -> (serde_json::Value, String) {
     let json = dir.join("out.json");
-    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
     let out = bin()
-        .args(["discrepancy", "--model", &deck, "--measured"])
+        .arg("discrepancy")
+        .args(prediction)
+        .arg("--measured")
         .arg(measured)
         .args(extra)
         .arg("--json")
@@ -191,13 +210,10 @@ fn discrepancy_json(
         .arg(dir.join("plots"))
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap()
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let v = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    (v, stderr)
 }
 
 /// The command line in flight mode: a synthetic flight with hidden drag written as CSV, the
@@ -291,9 +307,8 @@ fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
     }
     let bad = dir.join("bad.csv");
     std::fs::write(&bad, "alpha,CL\n0,0.1\n").unwrap();
-    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
     let out = bin()
-        .args(["discrepancy", "--model", &deck, "--measured"])
+        .args(["discrepancy", "--model", &example_deck(), "--measured"])
         .arg(&bad)
         .output()
         .unwrap();
@@ -331,6 +346,67 @@ fn the_report_says_where_the_noise_came_from_and_the_threshold() {
     assert_eq!(
         v["sigma_source"]["CD"],
         "given by the sigma_CD column at every row"
+    );
+}
+
+/// Regression (review 6): `--predicted` refused the CSV that `run --format csv` writes
+/// ("column caseid: expected a finite number"). It reads it: each flight condition's curve is
+/// the deck's prediction as `--model` gives it (less the tail's contributions), the analysis
+/// runs, a note says which case and condition were read, and a file of neither form is
+/// refused naming the columns each form needs.
+#[test]
+fn the_csv_of_run_is_read_as_a_prediction() {
+    let dir = temp_dir("run-csv");
+    let out = bin()
+        .args(["run", &example_deck(), "--format", "csv"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let run_csv = dir.join("uav.csv");
+    std::fs::write(&run_csv, &text).unwrap();
+    // Exact equality: the CSV prints each number's shortest round-trip digits.
+    let deck = datcom::read_deck_file(std::path::Path::new(&example_deck())).unwrap();
+    for condition in 1..=4 {
+        let read = read_prediction(&text, "uav.csv", 1, condition).unwrap();
+        let m = from_deck(&deck, 1, condition - 1).unwrap();
+        let p = &read.prediction;
+        let q = &m.prediction;
+        assert_eq!(
+            (&p.alpha_deg, &p.cl, &p.cd, &p.cm),
+            (&q.alpha_deg, &q.cl, &q.cd, &q.cm),
+            "condition {condition}"
+        );
+        assert_eq!(p.tail_cl, None);
+    }
+    let measured = dir.join("tunnel.csv");
+    std::fs::write(&measured, tunnel_csv(5, None)).unwrap();
+    let (v, stderr) = discrepancy_output(
+        &dir,
+        &["--predicted".as_ref(), run_csv.as_os_str()],
+        &measured,
+        &[],
+    );
+    assert_eq!(v["effects"][0]["id"], "parasite_drag");
+    assert!(
+        stderr.contains("read case 1 of 1, flight condition 1 of 4 (Mach 0.06, altitude 0)")
+            && stderr.contains("choose another with --case and --condition"),
+        "{stderr}"
+    );
+    let neither = dir.join("neither.csv");
+    std::fs::write(&neither, "a,b\n1,2\n").unwrap();
+    let out = bin()
+        .args(["discrepancy", "--predicted"])
+        .arg(&neither)
+        .arg("--measured")
+        .arg(&measured)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("alpha_deg, CL, CD, Cm") && err.contains("run --format csv"),
+        "{err}"
     );
 }
 

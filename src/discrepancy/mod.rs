@@ -52,6 +52,8 @@ pub enum DiscrepancyError {
     },
     #[error("{reason}")]
     Invalid { reason: String },
+    #[error("{file}: not a prediction: {reason}; --predicted reads a prediction table (columns alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail; docs/discrepancy.md) or the CSV that `datcom-rs run --format csv` writes (columns case, condition, alpha, CL, CD, CM); a deck is given with --model")]
+    NotAPrediction { file: String, reason: String },
     #[error("the model gives no prediction: {reason}")]
     NoPrediction { reason: String },
     #[error("no measured point lies within the prediction's angles of attack ({from} to {to} deg) with beta 0 and CL, CD or Cm")]
