@@ -473,6 +473,66 @@ fn the_ultrastick120_tunnel_data_name_the_documented_effects() {
             a.rms_after
         );
     }
+    the_ultrastick120_doc_gives_the_figures_of(&a);
+}
+
+/// Regression (review 20): docs/discrepancy-ultrastick120.md had gone stale (a BIC fall of
+/// 3009 where the tool prints 3006.7, "BIC −136" for "falls by 136.4"). Its figures are the
+/// tool's, as the tool rounds them: the |z| range and BIC falls to 0.1, the RMS to 0.0001.
+fn the_ultrastick120_doc_gives_the_figures_of(a: &Analysis) {
+    let path = format!(
+        "{}/docs/discrepancy-ultrastick120.md",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let doc = std::fs::read_to_string(path).unwrap();
+    let z: Vec<f64> = a.residuals.iter().map(|b| b.z.abs()).collect();
+    let (lo, hi) = z
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(l, h), v| (l.min(*v), h.max(*v)));
+    let range = format!("|z| from {lo:.1} to {hi:.1}");
+    assert!(doc.contains(&range), "the doc does not say {range}");
+    for e in &a.effects {
+        let row = format!("| `{}` |", e.id.name());
+        let line = doc
+            .lines()
+            .find(|l| l.starts_with(&row))
+            .unwrap_or_default();
+        let bic = format!("| {:.1} |", e.evidence.bic_drop);
+        assert!(
+            line.ends_with(&bic),
+            "{row}: the doc has {line:?}, the tool {bic}"
+        );
+    }
+    // The last step: the candidates that lower BIC but are not named, each with its fall.
+    let rest = doc
+        .split("Then nothing more passes")
+        .nth(1)
+        .and_then(|s| s.split("\n\n").next())
+        .unwrap_or_default();
+    let last = a.selection.last().unwrap();
+    for t in &last.candidates {
+        let name = format!("`{}`", t.effect.name());
+        let said = rest
+            .split_once(name.as_str())
+            .and_then(|(_, after)| after.split_once('(')?.1.split_once(')'))
+            .map(|(inside, _)| inside.to_string())
+            .unwrap_or_default();
+        let fall = format!("{:.1}", t.bic_drop);
+        assert!(
+            said.ends_with(&fall),
+            "{name}: the doc has {said:?}, the tool {fall}"
+        );
+    }
+    for (label, rms) in [
+        ("DATCOM", &a.rms_before),
+        ("with the three effects", &a.rms_after),
+    ] {
+        let row = format!(
+            "| {label} | {:.4} | {:.4} | {:.4} |",
+            rms["CL"], rms["CD"], rms["Cm"]
+        );
+        assert!(doc.contains(&row), "the doc does not have {row}");
+    }
 }
 
 /// A prediction with a flat lift curve (CL 0.5 at every angle): on it a moment offset and a
