@@ -413,14 +413,21 @@ fn read_run_csv(
         }
     }
     let first = rows[0];
-    let configuration = t.text(RUN_CONFIGURATION)[first];
-    prediction
-        .validate()
-        .map_err(|reason| DiscrepancyError::NoPrediction {
+    let configuration = match t.text(RUN_CONFIGURATION)[first] {
+        "" => String::new(),
+        c => format!(", {c}"),
+    };
+    prediction.validate().map_err(|reason| {
+        let left_out = match warnings.len() {
+            0 => String::new(),
+            n => format!(" ({n} angle(s) left out: CL, CD or CM empty there)"),
+        };
+        DiscrepancyError::NoPrediction {
             reason: format!(
-                "{file}: case {case}, flight condition {condition}, {configuration}: {reason}"
+                "{file}: case {case}, flight condition {condition}{configuration}: {reason}{left_out}"
             ),
-        })?;
+        }
+    })?;
     let at = match flight[1][first] {
         "" => format!("Mach {}", flight[0][first]),
         altitude => format!("Mach {}, altitude {altitude}", flight[0][first]),
@@ -438,7 +445,7 @@ fn read_run_csv(
     Ok(PredictionFile {
         prediction,
         chosen: Some(format!(
-            "{file} is the CSV of run --format csv: read case {case} of {case_count}, flight condition {condition} of {condition_count} ({at}), {configuration}{of_pages}{choose}"
+            "{file} is the CSV of run --format csv: read case {case} of {case_count}, flight condition {condition} of {condition_count} ({at}){configuration}{of_pages}{choose}"
         )),
         warnings,
     })
@@ -555,6 +562,16 @@ case,caseid,condition,configuration,mach,altitude,deriv_unit,alpha,CD,CL,CM,CLQ
             let e = read_prediction(RUN_CSV, "run.csv", case, condition).unwrap_err();
             assert!(e.to_string().contains(says), "{e}");
         }
+        // No configuration column, no angle with CL, CD and CM: an error that says why.
+        let empty = "case,condition,alpha,CL,CD,CM\n1,1,0,,,\n1,1,2,,,\n";
+        let e = read_prediction(empty, "run.csv", 1, 1)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("flight condition 1: the prediction has 0 angle(s)")
+                && e.contains("(2 angle(s) left out: CL, CD or CM empty there)"),
+            "{e}"
+        );
     }
 
     #[test]
