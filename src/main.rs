@@ -639,16 +639,18 @@ fn read_text(path: &Path) -> Result<String, ExitCode> {
 
 /// The options of `discrepancy`.
 #[derive(clap::Args)]
+// One prediction, from a deck or a table: a missing one is an error naming both options.
+#[command(group(
+    clap::ArgGroup::new("prediction")
+        .args(["model", "predicted"])
+        .required(true)
+))]
 struct DiscrepancyArgs {
     /// A deck whose run is the prediction.
-    #[arg(
-        long,
-        value_name = "DECK",
-        required_unless_present = "predicted",
-        conflicts_with = "predicted"
-    )]
+    #[arg(long, value_name = "DECK")]
     model: Option<PathBuf>,
-    /// A prediction table (CSV: alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail).
+    /// A prediction table (CSV: alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail), or the CSV
+    /// of `run --format csv` (its case and flight condition chosen by --case and --condition).
     #[arg(long, value_name = "PRED.csv")]
     predicted: Option<PathBuf>,
     /// Measurements (CSV): static (alpha_deg, beta_deg, CL, CD, Cm, ..., sigma_<coef>) or,
@@ -663,7 +665,7 @@ struct DiscrepancyArgs {
     /// cm_de_per_rad, ...; the deck gives mass, area, chord, density and cmq).
     #[arg(long, value_name = "FILE", requires = "flight")]
     airframe: Option<PathBuf>,
-    /// Case of the deck (1-based).
+    /// Case of the deck or of the run CSV (1-based).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
     case: u64,
     /// Flight condition of the case (1-based, in the order of `run`).
@@ -734,8 +736,22 @@ fn discrepancy(a: &DiscrepancyArgs) -> ExitCode {
                 Ok(t) => t,
                 Err(c) => return c,
             };
-            match dy::data::read_prediction(&text, &p.display().to_string()) {
-                Ok(pr) => (pr, None),
+            let read = dy::data::read_prediction(
+                &text,
+                &p.display().to_string(),
+                a.case as usize,
+                a.condition as usize,
+            );
+            match read {
+                Ok(pr) => {
+                    if let Some(chosen) = &pr.chosen {
+                        eprintln!("note: {chosen}");
+                    }
+                    for w in &pr.warnings {
+                        eprintln!("warning: {w}");
+                    }
+                    (pr.prediction, None)
+                }
                 Err(e) => return fail(&e),
             }
         }

@@ -6,6 +6,7 @@ mod common;
 
 use datcom::discrepancy::{
     analyse_static,
+    data::read_prediction,
     effects::{EffectId, Prediction},
     flight::{analyse_flight, Airframe},
     prediction::{from_deck, DeckModel},
@@ -172,6 +173,10 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     d
 }
 
+fn example_deck() -> String {
+    format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"))
+}
+
 /// `datcom-rs discrepancy` on the example deck with `measured` and `extra` arguments, JSON and
 /// plots written into `dir`: exit 0 asserted, the JSON returned.
 fn discrepancy_json(
@@ -179,10 +184,24 @@ fn discrepancy_json(
     measured: &std::path::Path,
     extra: &[&std::ffi::OsStr],
 ) -> serde_json::Value {
+    let deck = example_deck();
+    discrepancy_output(dir, &["--model".as_ref(), deck.as_ref()], measured, extra).0
+}
+
+/// `datcom-rs discrepancy` with the `prediction` arguments (`--model DECK` or `--predicted
+/// FILE`), `measured` and `extra`, JSON and plots written into `dir`: exit 0 asserted, the
+/// JSON and the standard error returned.
+fn discrepancy_output(
+    dir: &std::path::Path,
+    prediction: &[&std::ffi::OsStr],
+    measured: &std::path::Path,
+    extra: &[&std::ffi::OsStr],
+) -> (serde_json::Value, String) {
     let json = dir.join("out.json");
-    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
     let out = bin()
-        .args(["discrepancy", "--model", &deck, "--measured"])
+        .arg("discrepancy")
+        .args(prediction)
+        .arg("--measured")
         .arg(measured)
         .args(extra)
         .arg("--json")
@@ -191,13 +210,10 @@ fn discrepancy_json(
         .arg(dir.join("plots"))
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap()
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let v = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    (v, stderr)
 }
 
 /// The command line in flight mode: a synthetic flight with hidden drag written as CSV, the
@@ -232,6 +248,13 @@ fn the_command_line_finds_hidden_drag_in_a_recorded_flight() {
     for key in ["rms_before", "rms_after", "confounded"] {
         assert!(!v[key].is_null(), "no {key} in the JSON");
     }
+    // Regression (review 11): the threshold's value, not its internal name.
+    let criterion = v["criterion"].as_str().unwrap();
+    let threshold = Options::default().min_bic_drop;
+    assert!(
+        criterion.ends_with(&format!("falls by more than {threshold}")),
+        "{criterion}"
+    );
     let svg = std::fs::read_to_string(plots.join("flight-airspeed_mps.svg")).unwrap();
     for label in [
         "recorded",
@@ -242,23 +265,38 @@ fn the_command_line_finds_hidden_drag_in_a_recorded_flight() {
     }
 }
 
-/// A static CSV through the command line: the JSON has the issue's shape and the plots
-/// carry the three series; a missing column is an error naming it.
-#[test]
-fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
+/// Synthetic tunnel data of the example UAV with a hidden parasite drag, as the CSV a user
+/// gives (`alpha_deg,CL,CD,Cm`, plus a `sigma_CD` column of `sigma_cd` when given).
+fn tunnel_csv(seed: u64, sigma_cd: Option<f64>) -> String {
     let m = model();
     let p = &m.prediction;
     let hidden = [(EffectId::ParasiteDrag, typical(EffectId::ParasiteDrag))];
     let refs: Vec<(EffectId, &[f64])> = hidden.iter().map(|(e, v)| (*e, v.as_slice())).collect();
-    let meas = static_measurement(p, &refs, &alphas(p), TUNNEL_NOISE, 5);
-    let dir = temp_dir("static");
-    let mut csv = String::from("alpha_deg,CL,CD,Cm\n");
+    let meas = static_measurement(p, &refs, &alphas(p), TUNNEL_NOISE, seed);
+    let mut csv = String::from("alpha_deg,CL,CD,Cm");
+    csv.push_str(if sigma_cd.is_some() {
+        ",sigma_CD\n"
+    } else {
+        "\n"
+    });
     for (k, a) in meas.alpha_deg.iter().enumerate() {
         let v = |c: &str| meas.values[c][k].unwrap();
-        csv.push_str(&format!("{a},{},{},{}\n", v("CL"), v("CD"), v("Cm")));
+        csv.push_str(&format!("{a},{},{},{}", v("CL"), v("CD"), v("Cm")));
+        match sigma_cd {
+            Some(s) => csv.push_str(&format!(",{s}\n")),
+            None => csv.push('\n'),
+        }
     }
+    csv
+}
+
+/// A static CSV through the command line: the JSON has the issue's shape and the plots
+/// carry the three series; a missing column is an error naming it.
+#[test]
+fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
+    let dir = temp_dir("static");
     let measured = dir.join("tunnel.csv");
-    std::fs::write(&measured, &csv).unwrap();
+    std::fs::write(&measured, tunnel_csv(5, None)).unwrap();
     let v = discrepancy_json(&dir, &measured, &[]);
     let plots = dir.join("plots");
     assert_eq!(v["effects"][0]["id"], "parasite_drag");
@@ -269,14 +307,127 @@ fn the_command_line_reads_static_measurements_and_says_what_is_wrong() {
     }
     let bad = dir.join("bad.csv");
     std::fs::write(&bad, "alpha,CL\n0,0.1\n").unwrap();
-    let deck = format!("{}/namelists/example-uav.dcm", env!("CARGO_MANIFEST_DIR"));
     let out = bin()
-        .args(["discrepancy", "--model", &deck, "--measured"])
+        .args(["discrepancy", "--model", &example_deck(), "--measured"])
         .arg(&bad)
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no column alpha_deg"));
+}
+
+/// Regression (review 11): with `--sigma` the report said the noise was "given (sigma_CD) at
+/// every row", as if the CSV had that column, and its criterion named the internal
+/// `min_bic_drop` instead of the threshold. Now the source is `--sigma` (a real column is
+/// named as a column) and the criterion gives the value.
+#[test]
+fn the_report_says_where_the_noise_came_from_and_the_threshold() {
+    let dir = temp_dir("sigma-source");
+    let measured = dir.join("tunnel.csv");
+    std::fs::write(&measured, tunnel_csv(5, None)).unwrap();
+    let v = discrepancy_json(
+        &dir,
+        &measured,
+        &["--sigma".as_ref(), "CL=0.005,CD=0.001,Cm=0.002".as_ref()],
+    );
+    for c in ["CL", "CD", "Cm"] {
+        assert_eq!(v["sigma_source"][c], "given by --sigma", "{c}");
+    }
+    let criterion = v["criterion"].as_str().unwrap();
+    let threshold = Options::default().min_bic_drop;
+    assert!(
+        criterion.ends_with(&format!("falls by more than {threshold}"))
+            && !criterion.contains("min_bic_drop"),
+        "{criterion}"
+    );
+    let with_column = dir.join("tunnel-sigma.csv");
+    std::fs::write(&with_column, tunnel_csv(5, Some(0.001))).unwrap();
+    let v = discrepancy_json(&dir, &with_column, &[]);
+    assert_eq!(
+        v["sigma_source"]["CD"],
+        "given by the sigma_CD column at every row"
+    );
+}
+
+/// Regression (review 6): `--predicted` refused the CSV that `run --format csv` writes
+/// ("column caseid: expected a finite number"). It reads it: each flight condition's curve is
+/// the deck's prediction as `--model` gives it (less the tail's contributions), the analysis
+/// runs, a note says which case and condition were read, and a file of neither form is
+/// refused naming the columns each form needs.
+#[test]
+fn the_csv_of_run_is_read_as_a_prediction() {
+    let dir = temp_dir("run-csv");
+    let out = bin()
+        .args(["run", &example_deck(), "--format", "csv"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let run_csv = dir.join("uav.csv");
+    std::fs::write(&run_csv, &text).unwrap();
+    // Exact equality: the CSV prints each number's shortest round-trip digits.
+    let deck = datcom::read_deck_file(std::path::Path::new(&example_deck())).unwrap();
+    for condition in 1..=4 {
+        let read = read_prediction(&text, "uav.csv", 1, condition).unwrap();
+        let m = from_deck(&deck, 1, condition - 1).unwrap();
+        let p = &read.prediction;
+        let q = &m.prediction;
+        assert_eq!(
+            (&p.alpha_deg, &p.cl, &p.cd, &p.cm),
+            (&q.alpha_deg, &q.cl, &q.cd, &q.cm),
+            "condition {condition}"
+        );
+        assert_eq!(p.tail_cl, None);
+    }
+    let measured = dir.join("tunnel.csv");
+    std::fs::write(&measured, tunnel_csv(5, None)).unwrap();
+    let (v, stderr) = discrepancy_output(
+        &dir,
+        &["--predicted".as_ref(), run_csv.as_os_str()],
+        &measured,
+        &[],
+    );
+    assert_eq!(v["effects"][0]["id"], "parasite_drag");
+    assert!(
+        stderr.contains("read case 1 of 1, flight condition 1 of 4 (Mach 0.06, altitude 0)")
+            && stderr.contains("choose another with --case and --condition"),
+        "{stderr}"
+    );
+    let neither = dir.join("neither.csv");
+    std::fs::write(&neither, "a,b\n1,2\n").unwrap();
+    let out = bin()
+        .args(["discrepancy", "--predicted"])
+        .arg(&neither)
+        .arg("--measured")
+        .arg(&measured)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("alpha_deg, CL, CD, Cm") && err.contains("run --format csv"),
+        "{err}"
+    );
+}
+
+/// Regression (review 23): without a prediction the usage error named only `--model`; it
+/// names both ways of giving one.
+#[test]
+fn a_missing_prediction_names_model_and_predicted() {
+    let dir = temp_dir("no-prediction");
+    let measured = dir.join("m.csv");
+    std::fs::write(&measured, "alpha_deg,CL\n0,0.1\n").unwrap();
+    let out = bin()
+        .args(["discrepancy", "--measured"])
+        .arg(&measured)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--model") && err.contains("--predicted"),
+        "{err}"
+    );
 }
 
 /// Issue 8, real data: the NASA Ultra Stick 120 tunnel tables against our DATCOM model
@@ -321,6 +472,66 @@ fn the_ultrastick120_tunnel_data_name_the_documented_effects() {
             a.rms_before,
             a.rms_after
         );
+    }
+    the_ultrastick120_doc_gives_the_figures_of(&a);
+}
+
+/// Regression (review 20): docs/discrepancy-ultrastick120.md had gone stale (a BIC fall of
+/// 3009 where the tool prints 3006.7, "BIC −136" for "falls by 136.4"). Its figures are the
+/// tool's, as the tool rounds them: the |z| range and BIC falls to 0.1, the RMS to 0.0001.
+fn the_ultrastick120_doc_gives_the_figures_of(a: &Analysis) {
+    let path = format!(
+        "{}/docs/discrepancy-ultrastick120.md",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let doc = std::fs::read_to_string(path).unwrap();
+    let z: Vec<f64> = a.residuals.iter().map(|b| b.z.abs()).collect();
+    let (lo, hi) = z
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(l, h), v| (l.min(*v), h.max(*v)));
+    let range = format!("|z| from {lo:.1} to {hi:.1}");
+    assert!(doc.contains(&range), "the doc does not say {range}");
+    for e in &a.effects {
+        let row = format!("| `{}` |", e.id.name());
+        let line = doc
+            .lines()
+            .find(|l| l.starts_with(&row))
+            .unwrap_or_default();
+        let bic = format!("| {:.1} |", e.evidence.bic_drop);
+        assert!(
+            line.ends_with(&bic),
+            "{row}: the doc has {line:?}, the tool {bic}"
+        );
+    }
+    // The last step: the candidates that lower BIC but are not named, each with its fall.
+    let rest = doc
+        .split("Then nothing more passes")
+        .nth(1)
+        .and_then(|s| s.split("\n\n").next())
+        .unwrap_or_default();
+    let last = a.selection.last().unwrap();
+    for t in &last.candidates {
+        let name = format!("`{}`", t.effect.name());
+        let said = rest
+            .split_once(name.as_str())
+            .and_then(|(_, after)| after.split_once('(')?.1.split_once(')'))
+            .map(|(inside, _)| inside.to_string())
+            .unwrap_or_default();
+        let fall = format!("{:.1}", t.bic_drop);
+        assert!(
+            said.ends_with(&fall),
+            "{name}: the doc has {said:?}, the tool {fall}"
+        );
+    }
+    for (label, rms) in [
+        ("DATCOM", &a.rms_before),
+        ("with the three effects", &a.rms_after),
+    ] {
+        let row = format!(
+            "| {label} | {:.4} | {:.4} | {:.4} |",
+            rms["CL"], rms["CD"], rms["Cm"]
+        );
+        assert!(doc.contains(&row), "the doc does not have {row}");
     }
 }
 

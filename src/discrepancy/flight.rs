@@ -339,7 +339,8 @@ pub struct FlightAnalysis {
     pub rms_after: BTreeMap<String, f64>,
     /// Noise per state (estimated from the record's scatter).
     pub sigma: BTreeMap<String, f64>,
-    pub criterion: &'static str,
+    /// How effects are chosen, with the threshold's value.
+    pub criterion: String,
     /// Every step of the selection with each candidate's fall of BIC.
     pub selection: Vec<super::Step>,
     /// The simulated histories, prediction and corrected, per state.
@@ -481,7 +482,10 @@ pub fn analyse_flight(
             .collect(),
         effects,
         confounded: selection.confounded,
-        criterion: "BIC = chi-square + k ln n on the output errors, added when it falls by more than min_bic_drop",
+        criterion: format!(
+            "BIC = chi-square + k ln n on the output errors, added when it falls by more than {}",
+            options.min_bic_drop
+        ),
         selection: selection.trace.clone(),
         simulated_before: named(&ob),
         simulated_after: named(&oa),

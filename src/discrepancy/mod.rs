@@ -52,6 +52,8 @@ pub enum DiscrepancyError {
     },
     #[error("{reason}")]
     Invalid { reason: String },
+    #[error("{file}: not a prediction: {reason}; --predicted reads a prediction table (columns alpha_deg, CL, CD, Cm, optional CL_tail, Cm_tail; docs/discrepancy.md) or the CSV that `datcom-rs run --format csv` writes (columns case, condition, alpha, CL, CD, CM); a deck is given with --model")]
+    NotAPrediction { file: String, reason: String },
     #[error("the model gives no prediction: {reason}")]
     NoPrediction { reason: String },
     #[error("no measured point lies within the prediction's angles of attack ({from} to {to} deg) with beta 0 and CL, CD or Cm")]
@@ -159,7 +161,8 @@ pub struct Analysis {
     /// Noise standard deviation per coefficient, and where it came from.
     pub sigma: BTreeMap<String, f64>,
     pub sigma_source: BTreeMap<String, String>,
-    pub criterion: &'static str,
+    /// How effects are chosen, with the threshold's value.
+    pub criterion: String,
     /// Every step of the selection with each candidate's fall of BIC.
     pub selection: Vec<Step>,
     pub warnings: Vec<String>,
@@ -703,10 +706,12 @@ fn noise(
             .filter(|&r| given.and_then(|g| g[r]).is_none())
             .collect();
         if unsigned.is_empty() {
-            source.insert(
-                name.to_string(),
-                format!("given (sigma_{name}) at every row"),
-            );
+            let given = if measured.sigma_set_for_all_rows.contains(*name) {
+                "given by --sigma".to_string()
+            } else {
+                format!("given by the sigma_{name} column at every row")
+            };
+            source.insert(name.to_string(), given);
             continue;
         }
         let mut pairs: Vec<(f64, f64)> = measured_rows
@@ -746,7 +751,7 @@ fn noise(
             name.to_string(),
             if rows_given > 0 {
                 format!(
-                    "given (sigma_{name}) at {rows_given} row(s), elsewhere estimated from {how}"
+                    "given by the sigma_{name} column at {rows_given} row(s), elsewhere estimated from {how}"
                 )
             } else {
                 format!("estimated from {how}")
@@ -893,7 +898,10 @@ pub fn analyse_static(
             .filter_map(|(n, s)| Some((n.to_string(), s?)))
             .collect(),
         sigma_source,
-        criterion: "BIC = chi-square + k ln n, added when it falls by more than min_bic_drop",
+        criterion: format!(
+            "BIC = chi-square + k ln n, added when it falls by more than {}",
+            options.min_bic_drop
+        ),
         selection: selection.trace,
         warnings,
     })

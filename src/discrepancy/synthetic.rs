@@ -96,6 +96,7 @@ pub fn static_measurement(
         alpha_deg: kept,
         values,
         sigma: BTreeMap::new(),
+        sigma_set_for_all_rows: Default::default(),
     }
 }
 
