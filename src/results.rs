@@ -1283,6 +1283,12 @@ fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
 /// reference area, a chord station, a position) is not given, with a warning naming each; an
 /// element of an array that is not a number is kept in place, named by a warning, and refused
 /// by what reads it, which says so (a flight condition, a body, a section's coordinates).
+///
+/// The build-up reads slopes and the downwash from its curves over the schedule of angles,
+/// as the original does: the values at an angle depend on the other angles given
+/// (docs/tail.md). A schedule of one angle gives only the single components' pages, without
+/// slopes, with a warning. Angles of ±90° and beyond with a lifting surface, and beyond ±180°,
+/// are computed with a warning, as `check` says of them.
 pub fn run_case(case: &Case) -> CaseResults {
     if let Some((fixed, said)) = with_a_scale_that_is_a_number(case) {
         let mut results = run_case(&fixed);
@@ -1423,8 +1429,8 @@ fn without_non_finite(entry: &mut ConditionResults) -> Option<String> {
     }
     (!found.is_empty()).then(|| {
         format!(
-            "Mach {:.3}, {}: not finite, not computed: {}",
-            entry.condition.mach,
+            "Mach {}, {}: not finite, not computed: {}",
+            crate::charts::Query(entry.condition.mach),
             entry.configuration,
             found.join("; ")
         )
@@ -1448,6 +1454,14 @@ fn compute_case(case: &Case) -> CaseResults {
                 .iter()
                 .map(|w| Warning::text(w.as_str())),
         );
+        // What `check` says of the schedule, said by the run too (a case built in code may
+        // not have been checked).
+        let angles: Vec<(usize, f64)> = (1..).zip(f.alpha_deg.iter().copied()).collect();
+        let lifting =
+            case.wing.is_some() || case.horizontal_tail.is_some() || case.vertical_tail.is_some();
+        if let Some((_, problem)) = crate::case::angles_of_attack_problem(&angles, lifting) {
+            warnings.push(format!("{problem}: computed as given").into());
+        }
         warnings.extend(
             crate::methods::experimental::unused_variables(case)
                 .into_iter()
@@ -1616,7 +1630,9 @@ fn compute_case(case: &Case) -> CaseResults {
                 // The page's own warnings after its dynamic derivatives'.
                 match static_warnings {
                     Ok(mut w) => warnings.append(&mut w),
-                    Err(e) => warnings.push(format!("Mach {:.3}: {e}", c.mach).into()),
+                    Err(e) => {
+                        warnings.push(format!("Mach {}: {e}", crate::charts::Query(c.mach)).into())
+                    }
                 }
                 if own {
                     own_computed = true;
@@ -1628,6 +1644,9 @@ fn compute_case(case: &Case) -> CaseResults {
                             wing_section,
                         ));
                     }
+                }
+                if n == 1 {
+                    without_schedule_readings(&mut entry, part);
                 }
                 if let Some(w) = without_non_finite(&mut entry) {
                     warnings.push(w.into());
@@ -1649,6 +1668,9 @@ fn compute_case(case: &Case) -> CaseResults {
             }
         }
     }
+    if case.flight.as_ref().is_some_and(|f| f.alpha_deg.len() == 1) && !conditions.is_empty() {
+        warnings.push(ONE_ANGLE.into());
+    }
     // The same warning from several configurations of a condition is said once (the
     // writers also say a text once: `warning::texts`).
     crate::warning::dedup(&mut warnings);
@@ -1669,6 +1691,41 @@ fn compute_case(case: &Case) -> CaseResults {
         conditions,
         warnings,
         configuration,
+    }
+}
+
+/// What a schedule of one angle of attack does not give ([`without_schedule_readings`]).
+const ONE_ANGLE: &str = "one angle of attack: DATCOM's build-up reads slopes and the downwash from its curves over the schedule's angles, which one angle does not give: CLA and CMA are not given, nor any value of the pages that combine components (wing-body, with tails); the single components' pages are; give a schedule of several angles around the one wanted";
+
+/// A page computed at one angle of attack, without what DATCOM's build-up reads from its
+/// curves over the schedule (a curve of one point has no slope: the readings took it as 0):
+/// the slopes CLA and CMA of every page, and every value of a page that combines components
+/// (their interference, downwash and lateral terms read the curves).
+fn without_schedule_readings(entry: &mut ConditionResults, part: &str) {
+    let n = entry.alpha_deg.len();
+    let single = [
+        LOW_ASPECT_RATIO,
+        BODY_ALONE,
+        WING_ALONE,
+        HORIZONTAL_TAIL,
+        VERTICAL_TAIL,
+        VENTRAL_FIN,
+    ]
+    .contains(&part);
+    let s = &mut entry.static_coefficients;
+    if single {
+        s.cla = nones(n);
+        s.cma = nones(n);
+        return;
+    }
+    *s = StaticCoefficients::empty(n);
+    entry.downwash = None;
+    if let Some(d) = &mut entry.dynamic {
+        let no_method = std::mem::take(&mut d.no_method);
+        *d = DynamicDerivatives {
+            no_method,
+            ..DynamicDerivatives::empty(n)
+        };
     }
 }
 

@@ -208,7 +208,13 @@ impl fmt::Display for Context {
             Context::Case => Ok(()),
             Context::Part(label) => f.write_str(label),
             Context::Sideslip(label) => write!(f, "{label}, sideslip"),
-            Context::Dynamic { mach } => write!(f, "Mach {mach}: dynamic derivatives"),
+            Context::Dynamic { mach } => {
+                write!(
+                    f,
+                    "Mach {}: dynamic derivatives",
+                    crate::charts::Query(*mach)
+                )
+            }
             Context::Section(surface) => write!(f, "{} section", surface.name()),
         }
     }

@@ -439,6 +439,119 @@ fn one_angle_gives_no_moment_terms_that_are_not_numbers() {
     assert!(first.tail_moment.is_some_and(f64::is_finite), "{first:?}");
 }
 
+/// The library review found a schedule of one angle giving wrong numbers without a word:
+/// DATCOM's build-up reads slopes and the downwash from its curves over the schedule, and a
+/// curve of one point was read with a slope of 0 (CLA 0.497 per rad where the schedule gives
+/// 4.98; CM -0.088 where it gives +0.002; with BUILD, CLA = 0 on the combinations' pages).
+/// At one angle the single components' pages keep their values at that angle (the same as
+/// in a schedule), without slopes; the pages that combine components are not computed; a
+/// warning says why.
+#[test]
+fn one_angle_gives_the_single_components_and_says_why_not_the_rest() {
+    let page = |r: &datcom::results::CaseResults, name: &str| {
+        r.conditions
+            .iter()
+            .find(|c| c.configuration.contains(name) && c.condition.altitude == Some(0.0))
+            .cloned()
+            .unwrap_or_else(|| panic!("{name}"))
+    };
+    let full = run(&|c: &mut datcom::Case| c.cards.build = true);
+    let at = full.conditions[0]
+        .alpha_deg
+        .iter()
+        .position(|&a| a == 4.0)
+        .expect("4 deg in the example's schedule");
+    let one = run(&|c: &mut datcom::Case| {
+        c.cards.build = true;
+        c.flight.as_mut().unwrap().alpha_deg = vec![4.0];
+    });
+    assert!(says(
+        &one,
+        "one angle of attack: DATCOM's build-up reads slopes"
+    ));
+    for name in ["BODY ALONE", "WING ALONE", "HORIZONTAL TAIL CONFIGURATION"] {
+        let (f, o) = (page(&full, name), page(&one, name));
+        let (f, o) = (&f.static_coefficients, &o.static_coefficients);
+        assert_eq!(
+            (o.cl[0], o.cd[0], o.cm[0]),
+            (f.cl[at], f.cd[at], f.cm[at]),
+            "{name}"
+        );
+        assert!(o.cl[0].is_some(), "{name}");
+        assert_eq!((o.cla[0], o.cma[0]), (None, None), "{name}");
+    }
+    for c in one
+        .conditions
+        .iter()
+        .filter(|c| c.configuration.contains('-'))
+    {
+        let s = &c.static_coefficients;
+        assert!(
+            [&s.cl, &s.cd, &s.cm, &s.cla, &s.cma, &s.clb]
+                .iter()
+                .all(|v| v[0].is_none()),
+            "{}: {s:?}",
+            c.configuration
+        );
+        assert!(c.downwash.is_none(), "{}", c.configuration);
+    }
+}
+
+/// The library review found a method called on a case never prepared saying only "no flight
+/// condition 0": it names `Case::prepare`.
+#[test]
+fn a_case_without_conditions_names_prepare() {
+    let case = build_case::example_uav();
+    let e = datcom::methods::wing::wing_alone(&case, 0, &[0.0, 4.0]).unwrap_err();
+    assert!(e.to_string().contains("Case::prepare"), "{e}");
+}
+
+/// The library review found a wing of zero span reported as "the wing section cannot be
+/// computed: planform: SSPN must be positive": the planform is at fault, and says so.
+#[test]
+fn a_planform_error_is_not_blamed_on_the_section() {
+    let r = run(&|c: &mut datcom::Case| c.wing.as_mut().unwrap().sspn = Some(0.0));
+    let texts = datcom::warning::texts(&r.warnings);
+    assert!(
+        texts.iter().any(|t| t.contains("wing planform: SSPN")),
+        "{texts:?}"
+    );
+    assert!(
+        !texts
+            .iter()
+            .any(|t| t.contains("section cannot be computed: planform")),
+        "{texts:?}"
+    );
+}
+
+/// The library review found `run_case` computing at 400° without a word, where `check`
+/// gives an error (and named only the first such angle): the run says what `check` says of
+/// the schedule, naming every angle.
+#[test]
+fn angles_beyond_the_methods_are_said_by_the_run() {
+    let r = run(&|c: &mut datcom::Case| {
+        c.flight.as_mut().unwrap().alpha_deg = vec![-200.0, 0.0, 4.0, 400.0];
+    });
+    assert!(
+        says(
+            &r,
+            "ALSCHD(1) = -200, ALSCHD(4) = 400 deg: an angle of attack lies between -180 and 180 deg: computed as given"
+        ),
+        "{:?}",
+        r.warnings
+    );
+    let r = run(&|c: &mut datcom::Case| {
+        c.flight.as_mut().unwrap().alpha_deg = vec![0.0, 4.0, 95.0];
+    });
+    assert!(says(&r, "ALSCHD(3) = 95 deg: the wing and tail methods give no meaningful numbers at 90 deg and beyond"));
+    let mut case = build_case::example_uav();
+    case.flight.as_mut().unwrap().alpha_deg = vec![-200.0, 0.0, 400.0];
+    case.prepare();
+    assert!(case.diagnose().iter().any(|d| d.is_error()
+        && d.to_string()
+            .contains("ALSCHD(1) = -200, ALSCHD(3) = 400 deg")));
+}
+
 /// Fuzzing the library found a NaN in a case's experimental data ($EXPR01 CDWB) put into the
 /// wing-body's drag column, and a NaN section lift-curve slope (CLALPA) kept as the section's
 /// slope: a value that is not a number is not given, and the case computes as without it.

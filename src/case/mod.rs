@@ -966,35 +966,12 @@ impl<'a> Checks<'a> {
         self.sign(card, var, true);
     }
 
-    /// The angles of attack: beyond ±180° none is meant; from ±90° the lifting-surface
-    /// methods (which divide by cos α) give no meaningful number, although the body methods
-    /// do (body-alone decks run to 90° and beyond).
+    /// The angles of attack ([`angles_of_attack_problem`]).
     fn angles_of_attack(&mut self, lifting_surfaces: bool) {
         let (card, var) = ("FLTCON", "ALSCHD");
-        if let Some((i, found)) = self
-            .values(card, var)
-            .find(|(_, a)| a.abs() > HALF_TURN_DEG)
-        {
-            self.push(
-                Severity::Error,
-                card,
-                Some(var),
-                format!(
-                    "{var}({i}) = {found} deg: an angle of attack lies between -{HALF_TURN_DEG} and {HALF_TURN_DEG} deg"
-                ),
-                None,
-            );
-        } else if let Some((i, found)) = self
-            .values(card, var)
-            .find(|(_, a)| lifting_surfaces && a.abs() >= RIGHT_ANGLE_DEG)
-        {
-            self.push(
-                Severity::Warning,
-                card,
-                Some(var),
-                format!("{var}({i}) = {found} deg: the wing and tail methods give no meaningful numbers at {RIGHT_ANGLE_DEG} deg and beyond (only the body's do), nor the slopes CLA and CMA at the angles next to this one in the schedule"),
-                None,
-            );
+        let angles: Vec<(usize, f64)> = self.values(card, var).collect();
+        if let Some((severity, message)) = angles_of_attack_problem(&angles, lifting_surfaces) {
+            self.push(severity, card, Some(var), message, None);
         }
     }
 
@@ -1016,6 +993,42 @@ impl<'a> Checks<'a> {
             self.problem(Severity::Error, card, Some(var), problem, None);
         }
     }
+}
+
+/// What is wrong with a schedule of angles of attack (1-based index and value, deg), naming
+/// every angle concerned: beyond ±180° none is meant (an error); from ±90° the
+/// lifting-surface methods (which divide by cos α) give no meaningful number, although the
+/// body methods do (body-alone decks run to 90° and beyond): a warning when the case has a
+/// lifting surface.
+pub(crate) fn angles_of_attack_problem(
+    angles: &[(usize, f64)],
+    lifting_surfaces: bool,
+) -> Option<(Severity, String)> {
+    let list = |beyond: &dyn Fn(f64) -> bool| {
+        let found: Vec<String> = angles
+            .iter()
+            .filter(|(_, a)| beyond(*a))
+            .map(|(i, a)| format!("ALSCHD({i}) = {a}"))
+            .collect();
+        (!found.is_empty()).then(|| found.join(", "))
+    };
+    if let Some(found) = list(&|a| a.abs() > HALF_TURN_DEG) {
+        return Some((
+            Severity::Error,
+            format!("{found} deg: an angle of attack lies between -{HALF_TURN_DEG} and {HALF_TURN_DEG} deg"),
+        ));
+    }
+    let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
+    let found = list(&|a| lifting_surfaces && a.abs() >= right)?;
+    let next = if found.contains(',') {
+        "these"
+    } else {
+        "this one"
+    };
+    Some((
+        Severity::Warning,
+        format!("{found} deg: the wing and tail methods give no meaningful numbers at {right} deg and beyond (only the body's do), nor the slopes CLA and CMA at the angles next to {next} in the schedule"),
+    ))
 }
 
 /// Altitudes the 1962 US Standard Atmosphere tabulates, m.

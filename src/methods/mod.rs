@@ -7,6 +7,12 @@
 //! them, with a warning; before calling a method directly on a case built in code, check it
 //! with [`crate::Case::values_not_numbers`] (or [`crate::Case::diagnose`], which also gives
 //! the deck's checks).
+//!
+//! Nor do they check the schedule or the conditions they are given: the angles of attack
+//! `alpha_deg` must be strictly increasing (as `run_case` sorts them), and the case's
+//! `conditions` must be those of its flight input ([`crate::Case::prepare`] after editing it;
+//! `run_case` warns when they are not). Their values at an angle depend on the other angles of
+//! the schedule, as the original's do (docs/tail.md).
 
 pub mod body;
 pub mod dynamic;

@@ -111,7 +111,7 @@ pub enum BodyTerms {
 #[serde(tag = "kind", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum BodyMethodError {
-    #[error("Mach {mach} is above the subsonic limit STMACH = {limit}: the subsonic body methods do not apply")]
+    #[error("Mach {} is above the subsonic limit STMACH = {limit}: the subsonic body methods do not apply", crate::charts::Query(*mach))]
     NotSubsonic { mach: f64, limit: f64 },
     #[error("the case is a low-aspect-ratio wing-body ($LARWB): the original computes no body-alone page for it")]
     LowAspectRatioWingBody,

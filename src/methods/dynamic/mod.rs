@@ -42,7 +42,7 @@ pub(crate) const DEG_PER_RAD: f64 = 180.0 / std::f64::consts::PI;
 #[serde(tag = "kind", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum DynamicError {
-    #[error("no flight condition {index}")]
+    #[error("no flight condition {index} (a case's conditions are derived from its flight input by Case::prepare)")]
     NoCondition { index: usize },
     #[error("the {what} results have {found} angles of attack, the schedule has {expected}")]
     AngleCount {

@@ -350,7 +350,7 @@ fn roll_yaw(
     let missing = |out: &mut Dynamic, reason: &str| {
         out.warnings.push(DynamicWarning::NotComputed {
             derivative: if tail_only {
-                "CLP"
+                "the horizontal tail's CLP"
             } else {
                 "CLP, CYP, CNP, CNR"
             },

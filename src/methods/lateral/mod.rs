@@ -64,7 +64,7 @@ pub use wing_body::{
 pub enum LateralError {
     #[error("the case has no wing ($WGPLNF)")]
     NoWing,
-    #[error("no flight condition {index}")]
+    #[error("no flight condition {index} (a case's conditions are derived from its flight input by Case::prepare)")]
     NoCondition { index: usize },
     #[error("the wing results have {found} angles of attack, the schedule has {expected}")]
     AngleCount { expected: usize, found: usize },

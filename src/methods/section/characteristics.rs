@@ -78,21 +78,24 @@ impl std::fmt::Display for SectionWarning {
         match self {
             SectionWarning::ReynoldsNumberMissing { mach } => write!(
                 f,
-                "no Reynolds number for Mach {mach}: the section characteristics use {REFERENCE_REYNOLDS_NUMBER:.0e}"
+                "no Reynolds number for Mach {}: the section characteristics use {REFERENCE_REYNOLDS_NUMBER:.0e}",
+                crate::charts::Query(*mach)
             ),
             SectionWarning::ReynoldsNumberLow {
                 mach,
                 reynolds_number,
             } => write!(
                 f,
-                "Reynolds number {reynolds_number:.4e} at Mach {mach} is below the airfoil section method's range: section characteristics computed at {MIN_REYNOLDS_NUMBER:.4e}"
+                "Reynolds number {reynolds_number:.4e} at Mach {} is below the airfoil section method's range: section characteristics computed at {MIN_REYNOLDS_NUMBER:.4e}",
+                crate::charts::Query(*mach)
             ),
             SectionWarning::MachInvalid { mach } => {
                 write!(f, "Mach number {mach} is not valid: no section characteristics")
             }
             SectionWarning::Failed { mach, reason } => write!(
                 f,
-                "the airfoil section method cannot compute the lift-curve slope at Mach {mach}: {reason}; give CLALPA for it"
+                "the airfoil section method cannot compute the lift-curve slope at Mach {}: {reason}; give CLALPA for it",
+                crate::charts::Query(*mach)
             ),
             SectionWarning::CrestNotLocated => write!(
                 f,

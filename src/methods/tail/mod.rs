@@ -86,9 +86,9 @@ pub enum TailError {
     NoVerticalTail,
     #[error("the case has no tail")]
     NoTail,
-    #[error("no flight condition {index}")]
+    #[error("no flight condition {index} (a case's conditions are derived from its flight input by Case::prepare)")]
     NoCondition { index: usize },
-    #[error("Mach {mach} is above the subsonic limit STMACH = {limit}: the subsonic downwash and tail methods do not apply")]
+    #[error("Mach {} is above the subsonic limit STMACH = {limit}: the subsonic downwash and tail methods do not apply", crate::charts::Query(*mach))]
     NotSubsonic { mach: f64, limit: f64 },
     #[error("the wing is not straight tapered: the original computes no downwash and no configuration totals for it")]
     NotStraightWing,

@@ -132,9 +132,9 @@ impl WingType {
 pub enum WingMethodError {
     #[error("the case has no wing ($WGPLNF)")]
     NoWing,
-    #[error("no flight condition {index}")]
+    #[error("no flight condition {index} (a case's conditions are derived from its flight input by Case::prepare)")]
     NoCondition { index: usize },
-    #[error("Mach {mach} is above the subsonic limit STMACH = {limit}: the subsonic wing methods do not apply (transonic and supersonic wing methods are not implemented)")]
+    #[error("Mach {} is above the subsonic limit STMACH = {limit}: the subsonic wing methods do not apply (transonic and supersonic wing methods are not implemented)", crate::charts::Query(*mach))]
     NotSubsonic { mach: f64, limit: f64 },
     #[error("the case is a low-aspect-ratio wing-body ($LARWB): the original computes no wing-alone page for it")]
     LowAspectRatioWingBody,
@@ -293,8 +293,17 @@ pub fn computed_wing_section(
 ) -> Option<Result<SectionCharacteristics, WingMethodError>> {
     let s = surface_section(case, Surface::Wing)?;
     Some(
-        s.map_err(|e| WingMethodError::Section {
-            reason: e.to_string(),
+        s.map_err(|e| match e {
+            // The section's chord and Reynolds number come from the planform: a planform
+            // that cannot give them is the planform's error.
+            crate::methods::section::SurfaceSectionError::Planform(g) => {
+                WingMethodError::Geometry {
+                    reason: g.to_string(),
+                }
+            }
+            e => WingMethodError::Section {
+                reason: e.to_string(),
+            },
         })
         .and_then(|s| {
             section_characteristics(&s.shape, &s.conditions, &s.overrides).map_err(|e| {

@@ -82,9 +82,9 @@ pub enum WingBodyError {
     NoBody,
     #[error("the case has no wing ($WGPLNF)")]
     NoWing,
-    #[error("no flight condition {index}")]
+    #[error("no flight condition {index} (a case's conditions are derived from its flight input by Case::prepare)")]
     NoCondition { index: usize },
-    #[error("Mach {mach} is above the subsonic limit STMACH = {limit}: the subsonic wing-body methods do not apply")]
+    #[error("Mach {} is above the subsonic limit STMACH = {limit}: the subsonic wing-body methods do not apply", crate::charts::Query(*mach))]
     NotSubsonic { mach: f64, limit: f64 },
     #[error("body geometry: {reason}")]
     BodyGeometry { reason: String },
