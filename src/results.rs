@@ -11,34 +11,64 @@ use crate::methods::section::surface_section;
 use crate::methods::section::{section_characteristics, SectionCharacteristics};
 use crate::warning::{Context, Warning};
 
-/// Static coefficients against angle of attack (columns of the original's static page).
-/// Derivatives are per radian. `None` where there is no value.
+/// Static coefficients against angle of attack (columns of the original's static page), one
+/// row per angle of [`ConditionResults::alpha_deg`]. Coefficients are on the reference area
+/// (moments also on the reference length); derivatives are per radian (the reports convert
+/// to the DERIV unit). Axes and signs as DATCOM's (docs/conventions.md). `None` where there
+/// is no value.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct StaticCoefficients {
+    /// CD: drag coefficient, wind axes, positive aft.
     pub cd: Vec<Option<f64>>,
+    /// CL: lift coefficient, wind axes, positive up.
     pub cl: Vec<Option<f64>>,
+    /// CM: pitching moment coefficient about the moment reference centre, nose up positive.
     pub cm: Vec<Option<f64>>,
+    /// CN: normal force coefficient, body axes, positive up.
     pub cn: Vec<Option<f64>>,
+    /// CA: axial force coefficient, body axes, positive aft.
     pub ca: Vec<Option<f64>>,
+    /// XCP: centre of pressure, CM/CN, in reference lengths ahead of the moment reference
+    /// centre.
     pub xcp: Vec<Option<f64>>,
+    /// CLA: dCL/dα, per radian.
     pub cla: Vec<Option<f64>>,
+    /// CMA: dCM/dα, per radian.
     pub cma: Vec<Option<f64>>,
+    /// CYB: dCY/dβ (side force, positive right), per radian. At every angle on the body-,
+    /// wing- and horizontal-tail-alone pages; on the others on the first row only, one value
+    /// per flight condition, as the original prints it (docs/lateral.md).
     pub cyb: Vec<Option<f64>>,
+    /// CNB: dCn/dβ (yawing moment, nose right positive), per radian; rows as CYB.
     pub cnb: Vec<Option<f64>>,
+    /// CLB: dCl/dβ (rolling moment, right wing down positive), per radian; at every angle.
     pub clb: Vec<Option<f64>>,
 }
 
-/// Dynamic derivatives against angle of attack (DAMP), per radian.
+/// Dynamic derivatives against angle of attack (DAMP), per radian of the non-dimensional
+/// rates q c̄/2V, α̇ c̄/2V, p b/2V and r b/2V, one row per angle. Which columns DATCOM gives
+/// at every angle and which once per condition, on the first row, depends on the
+/// configuration (docs/dynamic.md). `None` where there is no value.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct DynamicDerivatives {
+    /// CLQ: dCL/d(q c̄/2V); on the first row only.
     pub clq: Vec<Option<f64>>,
+    /// CMQ: dCM/d(q c̄/2V); on the first row only.
     pub cmq: Vec<Option<f64>>,
+    /// CLAD: dCL/d(α̇ c̄/2V); on the first row only, except on the pages with a wing, a body
+    /// and a horizontal tail (every angle).
     pub clad: Vec<Option<f64>>,
+    /// CMAD: dCM/d(α̇ c̄/2V); as CLAD.
     pub cmad: Vec<Option<f64>>,
+    /// CLP: dCl/d(p b/2V), rolling moment due to roll rate.
     pub clp: Vec<Option<f64>>,
+    /// CYP: dCY/d(p b/2V), side force due to roll rate.
     pub cyp: Vec<Option<f64>>,
+    /// CNP: dCn/d(p b/2V), yawing moment due to roll rate.
     pub cnp: Vec<Option<f64>>,
+    /// CNR: dCn/d(r b/2V), yawing moment due to yaw rate.
     pub cnr: Vec<Option<f64>>,
+    /// CLR: dCl/d(r b/2V), rolling moment due to yaw rate.
     pub clr: Vec<Option<f64>>,
     /// Extension (not on the original's page): the vertical panels' side force due to yaw
     /// rate CYr, per rad, where the configuration has a vertical tail or ventral fin; none

@@ -188,32 +188,50 @@ pub enum Loop {
     MachOuter,
 }
 
-/// $FLTCON in SI (angles in degrees).
+/// $FLTCON in SI (angles in degrees). The speeds (`mach`, `velocity`, `reynolds_per_length`)
+/// are indexed together, and so are the altitudes (`altitude`, `pressure`, `temperature`);
+/// `loop_mode` pairs them into flight conditions. After setting or changing it, call
+/// [`Case::prepare`], which derives [`Case::conditions`] from it.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct FlightInput {
+    /// MACH: free-stream Mach numbers (NMACH is their count).
     pub mach: Vec<f64>,
-    /// Free-stream velocity, m/s.
+    /// VINF: free-stream velocity, m/s. Used where no Mach number is given (Mach = V/a): a
+    /// given Mach number wins.
     pub velocity: Vec<f64>,
-    /// Reynolds number per metre, when given.
+    /// RNNUB: Reynolds number per metre; where not given, computed from the condition's
+    /// pressure, temperature and Mach number.
     pub reynolds_per_length: Vec<f64>,
-    /// Altitude, m.
+    /// ALT: geometric altitude, m; the 1962 US Standard Atmosphere gives pressure and
+    /// temperature there. With neither ALT nor PINF and TINF: sea level, where needed.
     pub altitude: Vec<f64>,
-    /// Free-stream static pressure, Pa, when given.
+    /// PINF: free-stream static pressure, Pa. Used only with `temperature` (then the altitude
+    /// is only reported); alone it is ignored.
     pub pressure: Vec<f64>,
-    /// Free-stream static temperature, K, when given.
+    /// TINF: free-stream static temperature, K. Used only with `pressure`.
     pub temperature: Vec<f64>,
+    /// ALSCHD (or ALPHA): angles of attack, deg, in increasing order ([`Case::prepare`] puts
+    /// them in order).
     pub alpha_deg: Vec<f64>,
+    /// LOOP: how the speeds and the altitudes combine (see [`Loop`]).
     pub loop_mode: Loop,
-    /// Weight, N.
+    /// WT: weight, N. No method uses it; the JSBSim export takes it for the aircraft's weight.
     pub weight: Option<f64>,
-    /// Flight-path angle, deg.
+    /// GAMMA: flight-path angle, deg. Kept and written back; no method uses it.
     pub gamma_deg: Option<f64>,
-    /// Transition strips present (TR=1).
+    /// TR: transition strips present (TR > 0 in a deck); read by the wing-body's drag due to
+    /// lift of a straight wing (the original's regression).
     pub transition_strips: bool,
+    /// STMACH: the Mach number up to which the subsonic methods apply, clamped to 0.6..0.99;
+    /// `None`: 0.6.
     pub stmach: Option<f64>,
+    /// TSMACH: the Mach number from which the supersonic methods apply, clamped to
+    /// 1.01..1.4; `None`: 1.4.
     pub tsmach: Option<f64>,
+    /// HYPERS: kept and written back; the hypersonic methods are not implemented.
     pub hypersonic: bool,
-    /// NALT is given (LOOP=1 then checks it against NMACH).
+    /// NALT is given (LOOP=1 then checks it against NMACH). [`Case::prepare`] sets it when
+    /// `altitude` is not empty.
     pub nalt_given: bool,
 }
 
@@ -257,42 +275,75 @@ impl FlightInput {
     }
 }
 
-/// $OPTINS: reference dimensions and roughness, SI.
+/// $OPTINS: reference dimensions and roughness, SI. A case with $LARWB takes its SREF, L and
+/// XCG in place of `area`, `chord` and the moment reference centre's x.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct Reference {
-    /// Reference area, m².
+    /// SREF: reference area, m²; `None`: the wing's theoretical area (both halves).
     pub area: Option<f64>,
-    /// Longitudinal reference length (mean aerodynamic chord), m.
+    /// CBARR: longitudinal reference length, m; `None`: the wing's theoretical mean
+    /// aerodynamic chord.
     pub chord: Option<f64>,
-    /// Lateral reference length (span), m.
+    /// BLREF: lateral reference length, m; `None`: the wing's span, 2·SSPN.
     pub span: Option<f64>,
-    /// Surface roughness height, m.
+    /// ROUGFC: surface roughness height, m (a deck gives it in inches or centimetres);
+    /// `None`, or below 1E-10 in the deck's unit: 1.6E-4 in.
     pub roughness: Option<f64>,
 }
 
 /// $SYNTHS: positions of the components and the moment reference centre, SI; angles in degrees.
 /// The default has every position unset and the vertical tail up, as a deck without them.
+///
+/// Positions are in the deck's frame, the one of [`Body::x`] (usually from the body's nose):
+/// x positive aft, z positive up. A position not given is 0. A surface's x is that of its
+/// theoretical apex, the leading edge of its root chord on the centre line; its z that of its
+/// root chord.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Synthesis {
+    /// XCG: x of the moment reference centre, m.
     pub xcg: Option<f64>,
+    /// ZCG: z of the moment reference centre, m (positive up).
     pub zcg: Option<f64>,
+    /// XW: x of the wing's theoretical apex, m.
     pub xw: Option<f64>,
+    /// ZW: z of the wing's root chord, m (positive up).
     pub zw: Option<f64>,
+    /// ALIW: wing incidence to the body axis, deg, leading edge up positive (the wing sees
+    /// α + ALIW).
     pub aliw_deg: Option<f64>,
+    /// XH: x of the horizontal tail's theoretical apex, m (at zero incidence when `hinax` is
+    /// given).
     pub xh: Option<f64>,
+    /// ZH: z of the horizontal tail's root chord, m (at zero incidence when `hinax` is given).
     pub zh: Option<f64>,
+    /// ALIH: horizontal tail incidence to the body axis, deg, leading edge up positive.
     pub alih_deg: Option<f64>,
+    /// XV: x of the vertical tail's theoretical apex, m.
     pub xv: Option<f64>,
+    /// ZV: z of the vertical tail's root chord, m.
     pub zv: Option<f64>,
+    /// XVF: x of the ventral fin's theoretical apex, m.
     pub xvf: Option<f64>,
+    /// ZVF: z of the ventral fin's root chord, m.
     pub zvf: Option<f64>,
+    /// YV: lateral position of the vertical tail, m. Kept and written back; no method uses it.
     pub yv: Option<f64>,
+    /// YF: lateral position of the ventral fin, m. Kept and written back; no method uses it.
     pub yf: Option<f64>,
+    /// PHIV: dihedral of twin vertical panels, deg. When given, the vertical tail's sideslip
+    /// derivatives are multiplied by 2 cos² PHIV (two panels).
     pub phiv_deg: Option<f64>,
+    /// PHIF: as `phiv_deg`, for the ventral fin.
     pub phif_deg: Option<f64>,
+    /// HINAX: x of the all-moving horizontal tail's hinge axis, m. When given, XH and ZH are
+    /// rotated by ALIH about it.
     pub hinax: Option<f64>,
+    /// SCALE as the deck gives it. The factor applied is [`Case::scale`]: changing this
+    /// field changes nothing computed, and [`Case::to_raw`] writes [`Case::scale`] in its
+    /// place.
     pub scale: Option<f64>,
-    /// Vertical tail above the body reference plane (default true).
+    /// VERTUP: the vertical tail stands above its root chord (default true); false hangs it
+    /// below. The ventral fin is taken to hang below when this is true.
     pub vertup: bool,
 }
 
@@ -322,43 +373,88 @@ impl Default for Synthesis {
     }
 }
 
-/// $BODY: stations and their areas, perimeters, radii and contours, SI.
+/// $BODY: stations and their areas, perimeters, radii and contours, SI. The cross-sections
+/// are given by R alone, by S alone, or by R, S and P together (the rest is completed from
+/// them: [`crate::geometry::body()`]); the arrays run over the stations of `x`.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct Body {
+    /// X: stations, m, not decreasing, at least 2; the first is the nose. The positions of
+    /// [`Synthesis`] are in this frame.
     pub x: Vec<f64>,
+    /// S: cross-section areas, m².
     pub s: Vec<f64>,
+    /// P: cross-section perimeters, m.
     pub p: Vec<f64>,
+    /// R: radii, m (of an elliptical body, see ELLIP, the area is π R² ELLIP).
     pub r: Vec<f64>,
+    /// ZU: z of the upper contour, m (positive up).
     pub zu: Vec<f64>,
+    /// ZL: z of the lower contour, m, not above ZU. Given, it selects the cambered-body
+    /// method (unless METHOD is 2).
     pub zl: Vec<f64>,
+    /// BNOSE: the nose's shape code. Kept and written back; no method here uses it.
     pub bnose: Option<f64>,
+    /// BTAIL: the tail's shape code. Given, the body's dynamic derivatives carry a warning
+    /// (their method assumes a nose-cylinder body).
     pub btail: Option<f64>,
+    /// BLN: nose length, m. When BLN or BLA is given, BLN + BLA is the body length the
+    /// dynamic derivatives take (else the length of `x`).
     pub bln: Option<f64>,
+    /// BLA: afterbody length, m (see `bln`).
     pub bla: Option<f64>,
+    /// DS: nose bluntness diameter, m. Kept and written back; no method here uses it.
     pub ds: Option<f64>,
+    /// ITYPE: kept and written back; no method here uses it.
     pub itype: Option<f64>,
+    /// METHOD: 1 (or `None`) DATCOM's methods, 2 Jorgensen's (any value above 1.5).
     pub method: Option<f64>,
+    /// ELLIP: height over width of elliptical cross-sections; `None` or not positive: 1.
     pub ellip: Option<f64>,
 }
 
-/// $WGPLNF, $HTPLNF, $VTPLNF, $VFPLNF: planform, SI; angles in degrees.
+/// $WGPLNF, $HTPLNF, $VTPLNF, $VFPLNF: planform, SI; angles in degrees. One trapezoidal panel
+/// from the centre line to the tip, or two (inboard to the break, outboard from it) when
+/// `sspnop` is positive ([`crate::geometry::planform()`]). A vertical tail or ventral fin is a
+/// single panel.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct Planform {
+    /// CHRDR: theoretical root chord (on the centre line), m; required.
     pub chrdr: Option<f64>,
+    /// CHRDBP: chord at the break, m; required with an outboard panel.
     pub chrdbp: Option<f64>,
+    /// CHRDTP: tip chord, m; `None`: 0 (a pointed tip).
     pub chrdtp: Option<f64>,
+    /// SSPN: theoretical semi-span, root chord to tip, m; required.
     pub sspn: Option<f64>,
+    /// SSPNE: exposed semi-span, body side to tip, m; `None`: SSPN (no body).
     pub sspne: Option<f64>,
+    /// SSPNOP: outboard panel's semi-span, break to tip, m; `None` or not positive: one panel.
     pub sspnop: Option<f64>,
+    /// SSPNDD: semi-span of the outboard dihedral panel (DHDADO), dihedral break to tip, m;
+    /// `None`: DHDADI over the whole span.
     pub sspndd: Option<f64>,
+    /// SAVSI: inboard panel's sweep at chord station CHSTAT, deg, positive aft; `None`: 0.
     pub savsi_deg: Option<f64>,
+    /// SAVSO: outboard panel's sweep at CHSTAT, deg; `None`: 0. Read only with an outboard
+    /// panel.
     pub savso_deg: Option<f64>,
+    /// CHSTAT: chord station of SAVSI and SAVSO, fraction of the chord from the leading edge
+    /// (0 to 1); `None`: 0, the sweeps are the leading edge's.
     pub chstat: Option<f64>,
+    /// TWISTA: twist of the tip relative to the root, deg; negative is washout (tip nose
+    /// down). `None`: 0.
     pub twista_deg: Option<f64>,
+    /// DHDADI: inboard dihedral, deg, tips up positive; `None`: 0.
     pub dhdadi_deg: Option<f64>,
+    /// DHDADO: outboard dihedral (outboard of SSPNDD), deg. `None`: DHDADI for the sideslip
+    /// and rate derivatives, 0 for the downwash.
     pub dhdado_deg: Option<f64>,
-    /// 1 straight tapered, 2 double delta, 3 cranked.
+    /// TYPE: 1 straight tapered, 2 double delta, 3 cranked, 4 curved (no method); rounded to
+    /// the nearest integer, 5 and above read as 1, below 0.5 refused by the wing methods.
+    /// `None`: straight tapered for the wing methods; a vertical tail's or ventral fin's
+    /// zero-lift drag takes it as not straight tapered, as the original.
     pub planform_type: Option<f64>,
+    /// SWAFP: kept and written back; no method uses it (the original discards it too).
     pub swafp_deg: Option<f64>,
 }
 
@@ -384,12 +480,15 @@ pub struct TwinPanels {
 }
 
 /// $LARWB: the low-aspect-ratio wing-body (lifting body), SI, angles in degrees. SREF, L and
-/// XCG replace the reference area, length and moment centre, as in the original.
+/// XCG replace the reference area, length and moment centre, as in the original. Its lengths
+/// and areas are not multiplied by SYNTHS SCALE (as the original's unit conversion).
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct LowAspectRatioWingBody {
+    /// SREF: reference area, m² (in place of $OPTINS SREF).
     pub sref: Option<f64>,
-    /// Body length L, the reference length.
+    /// Body length L, the reference length, m.
     pub length: Option<f64>,
+    /// XCG: x of the moment reference centre, m (in place of $SYNTHS XCG).
     pub xcg: Option<f64>,
     /// ZB: height of the apex above the base's centre (sets the zero-lift angle).
     pub zb: Option<f64>,
@@ -429,18 +528,28 @@ pub struct LowAspectRatioWingBody {
     pub xcenw: Option<f64>,
 }
 
-/// $WGSCHR and its kin: section characteristics the user gives (fractions of chord).
+/// $WGSCHR and its kin: section characteristics the user gives (fractions of chord), held in
+/// [`Case::sections`] by the surface's name. Every value is as the deck gives it (none has a
+/// unit to convert).
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct SectionInput {
-    /// Every scalar given, by variable name.
+    /// Every scalar given, by variable name (TOVC, XOVC, CLI, ..., and TYPEIN and NPTS, which
+    /// a section given by its coordinates needs here).
     pub scalars: BTreeMap<String, f64>,
+    /// XCORD: the coordinates' stations, fractions of the chord increasing from 0 to 1.
     pub xcord: Vec<f64>,
+    /// YUPPER: upper surface ordinates at `xcord` (TYPEIN = 1), fractions of the chord.
     pub yupper: Vec<f64>,
+    /// YLOWER: lower surface ordinates at `xcord` (TYPEIN = 1), fractions of the chord.
     pub ylower: Vec<f64>,
+    /// MEAN: mean-line ordinates at `xcord` (TYPEIN = 2), fractions of the chord.
     pub mean: Vec<f64>,
+    /// THICK: thickness (not half thickness) at `xcord` (TYPEIN = 2), fractions of the chord.
     pub thick: Vec<f64>,
-    /// Per-Mach inputs (CLALPA, CLMAX, XAC).
+    /// The other arrays by variable name: CLALPA, CLMAX and XAC (one value per Mach number of
+    /// $FLTCON) and SLOPE.
     pub per_mach: BTreeMap<String, Vec<f64>>,
+    /// CAMBER: the section is cambered.
     pub camber: Option<bool>,
 }
 
@@ -490,12 +599,25 @@ pub enum SixAReading {
 /// One case of a deck, typed and in SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Case {
+    /// 1-based position of the case in its deck (1 for [`Case::new`]).
     pub number: usize,
+    /// Line of the deck where the case's first card is (0 for a case built in code).
     pub first_line: usize,
+    /// The CASEID card's text.
     pub caseid: Option<String>,
+    /// The units of the case's deck form and reports: [`Case::to_raw`] writes the values in
+    /// them with a DIM card for them, and the reports give lengths, areas, pressures ... in
+    /// them. The values of `other` are in them. This, not `cards.dim` (the DIM card as read),
+    /// is the case's unit system.
     pub dim: Dim,
-    /// SYNTHS SCALE (default 1): geometry inside is the deck's geometry times this factor.
+    /// SYNTHS SCALE (default 1): the geometry of the typed case is already the deck's times
+    /// this factor (lengths, and areas by its square), so it scales no computation. It turns
+    /// the reported reference dimensions and PART pages, and the deck [`Case::to_raw`] writes,
+    /// back into the deck's dimensions. One that is not a positive number is taken as 1.
     pub scale: f64,
+    /// The unit of the reported derivatives (DERIV card: per degree unless DERIV RAD); the
+    /// results themselves are per radian. This, not `cards.deriv` (the DERIV card as read),
+    /// is the case's unit: [`Case::to_raw`] writes it in the cards.
     pub deriv: DerivUnit,
     /// Reynolds number rule of the section methods (see [`SectionReynolds`]).
     pub section_reynolds: SectionReynolds,
@@ -517,27 +639,45 @@ pub struct Case {
     pub outboard_section: OutboardSectionReading,
     /// A Jorgensen body's drag due to lift in the wing-body (see [`JorgensenDragReading`]).
     pub jorgensen_drag: JorgensenDragReading,
+    /// The control cards as read (DAMP, BUILD, PART, ...). Their `dim` and `deriv` record the
+    /// DIM and DERIV cards; the case's units are [`Case::dim`] and [`Case::deriv`].
     pub cards: Cards,
+    /// $FLTCON. After setting or changing it, call [`Case::prepare`] to derive `conditions`.
     pub flight: Option<FlightInput>,
+    /// $OPTINS: reference dimensions and roughness.
     pub reference: Reference,
+    /// $SYNTHS: positions of the components and the moment reference centre.
     pub synthesis: Option<Synthesis>,
+    /// $BODY.
     pub body: Option<Body>,
+    /// $WGPLNF: the wing's planform.
     pub wing: Option<Planform>,
+    /// $HTPLNF: the horizontal tail's planform.
     pub horizontal_tail: Option<Planform>,
+    /// $VTPLNF: the vertical tail's planform (one panel).
     pub vertical_tail: Option<Planform>,
+    /// $VFPLNF: the ventral fin's planform (one panel).
     pub ventral_fin: Option<Planform>,
     /// $TVTPAN.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub twin_panels: Option<TwinPanels>,
+    /// $WGSCHR, $HTSCHR, $VTSCHR, $VFSCHR by the surface's name (`WING`, `HORIZONTAL TAIL`,
+    /// `VERTICAL TAIL`, `VENTRAL FIN`).
     pub sections: BTreeMap<String, SectionInput>,
+    /// $LARWB.
     pub larwb: Option<LowAspectRatioWingBody>,
-    /// Flight conditions of the case (computed from `flight` when the case is typed).
+    /// Flight conditions of the case, derived from `flight` when the case is typed or
+    /// [`Case::prepare`]d (a run of a case whose `flight` changed since computes at what
+    /// `flight` gives, with a warning).
     pub conditions: Vec<crate::conditions::FlightCondition>,
     /// What was assumed or could not be computed for the flight conditions.
     pub condition_warnings: Vec<String>,
+    /// NACA cards. A surface's section is its last card, unless its section namelist gives
+    /// TYPEIN (the coordinates of `sections`).
     pub airfoils: Vec<AirfoilCard>,
     /// Namelists kept as read (deck units): flaps, power, ground effect, experimental data ...
     pub other: BTreeMap<String, NamelistValues>,
+    /// The case ends with SAVE: in a deck its data carry into the next case.
     pub save: bool,
 }
 

@@ -193,7 +193,7 @@ fn derivative(
 }
 
 /// Simulates from `initial` with the recorded inputs of `record` (held over each sample,
-/// RK4 with [`SUBSTEPS`] steps per sample); one state per sample. None when the simulation
+/// RK4 with 2 steps per sample); one state per sample. None when the simulation
 /// leaves the prediction's angles or diverges.
 pub fn simulate(
     prediction: &Prediction,

@@ -468,8 +468,9 @@ fn planform_row(line: &str) -> Option<(RowJson, Vec<&str>)> {
 }
 
 /// Reads the blocks of one CONFIGURATION AUXILIARY AND PARTIAL OUTPUT page (the lines after
-/// its FLIGHT CONDITIONS block) into `into`: what [`basic_properties`] and [`interference`]
-/// print, from our listings or the original's. Rows of cranked planforms' panels are skipped.
+/// its FLIGHT CONDITIONS block) into `into`: the basic body and planform properties, the
+/// interference lines, the sidewash and the blocks after them, from our listings or the
+/// original's. Rows of cranked planforms' panels are skipped.
 pub fn read_page(lines: &[&str], into: &mut AuxiliaryJson) {
     let mut surface: Option<&'static str> = None;
     let mut theoretical: Option<RowJson> = None;

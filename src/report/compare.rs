@@ -348,7 +348,8 @@ pub fn nothing_in_common(ours: &Value, reference: &Value) -> Option<String> {
 /// Compares every coefficient of `ours` with `reference` (both in the JSON shape of `run`),
 /// case by case and condition by condition in order; worst agreement first. A reference page
 /// with power or ground effects that ours does not include has the numbers they change
-/// counted as missing ([`Effects`]).
+/// counted as missing (with power CD, CL, CM, CN, CA and XCP; at a ground height every static
+/// and downwash number).
 pub fn compare(ours: &Value, reference: &Value) -> Vec<ColumnAgreement> {
     let mut out: Vec<ColumnAgreement> = STATIC
         .iter()

@@ -196,9 +196,9 @@ pub enum WingWarning {
     NoDrag { reason: String },
     /// The wing section's own warnings.
     Section { message: String },
-    /// The aspect ratio lies within [`lift::ASPECT_RATIO_BOUNDARY_BAND`] of DATCOM's boundary
-    /// between its high- and low-aspect-ratio methods: maximum lift, the lift beyond the
-    /// linear range and the pitching moment change in a step across it.
+    /// The aspect ratio lies within 2 % of DATCOM's boundary between its high- and
+    /// low-aspect-ratio methods: maximum lift, the lift beyond the linear range and the
+    /// pitching moment change in a step across it.
     NearAspectRatioBoundary { aspect_ratio: f64, boundary: f64 },
 }
 
