@@ -1316,8 +1316,8 @@ fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
 ///
 /// The build-up reads slopes and the downwash from its curves over the schedule of angles,
 /// as the original does: the values at an angle depend on the other angles given
-/// (docs/tail.md). A schedule of one angle gives only the single components' pages, without
-/// slopes, with a warning. Angles of ±90° and beyond with a lifting surface, and beyond ±180°,
+/// (docs/tail.md). A schedule of one angle gives no page with the downwash at a
+/// horizontal tail, and CLA and CMA only where they are analytic, with a warning. Angles of ±90° and beyond with a lifting surface, and beyond ±180°,
 /// are computed with a warning, as `check` says of them.
 pub fn run_case(case: &Case) -> CaseResults {
     if let Some((fixed, said)) = with_a_scale_that_is_a_number(case) {
@@ -1725,37 +1725,27 @@ fn compute_case(case: &Case) -> CaseResults {
 }
 
 /// What a schedule of one angle of attack does not give ([`without_schedule_readings`]).
-const ONE_ANGLE: &str = "one angle of attack: DATCOM's build-up reads slopes and the downwash from its curves over the schedule's angles, which one angle does not give: CLA and CMA are not given, nor any value of the pages that combine components (wing-body, with tails); the single components' pages are; give a schedule of several angles around the one wanted";
+const ONE_ANGLE: &str = "one angle of attack: DATCOM's build-up reads slopes and the downwash at the horizontal tail from its curves over the schedule's angles, which one angle does not give (a curve of one point is flat): CLA and CMA are given only where they are a method's analytic slopes (body alone, wing alone), and the pages with the downwash at a horizontal tail are not given; the other pages' values read their curves at nearby angles as flat (a few per cent); give a schedule of several angles around the one wanted";
 
-/// A page computed at one angle of attack, without what DATCOM's build-up reads from its
-/// curves over the schedule (a curve of one point has no slope: the readings took it as 0):
-/// the slopes CLA and CMA of every page, and every value of a page that combines components
-/// (their interference, downwash and lateral terms read the curves).
+/// A page computed at one angle of attack, without what DATCOM's build-up reads as slopes of
+/// its curves over the schedule (a curve of one point was read with a slope of 0): the slopes
+/// CLA and CMA, except on the body-alone and wing-alone pages, whose first angle's are their
+/// methods' analytic slopes; on a page with the downwash at a horizontal tail (its gradient,
+/// and every coefficient through it) the static coefficients, the downwash table and the α̇
+/// derivatives. The other values stand, as the original prints them (docs/differences.md).
 fn without_schedule_readings(entry: &mut ConditionResults, part: &str) {
     let n = entry.alpha_deg.len();
-    let single = [
-        LOW_ASPECT_RATIO,
-        BODY_ALONE,
-        WING_ALONE,
-        HORIZONTAL_TAIL,
-        VERTICAL_TAIL,
-        VENTRAL_FIN,
-    ]
-    .contains(&part);
     let s = &mut entry.static_coefficients;
-    if single {
+    if ![BODY_ALONE, WING_ALONE].contains(&part) {
         s.cla = nones(n);
         s.cma = nones(n);
-        return;
     }
-    *s = StaticCoefficients::empty(n);
-    entry.downwash = None;
-    if let Some(d) = &mut entry.dynamic {
-        let no_method = std::mem::take(&mut d.no_method);
-        *d = DynamicDerivatives {
-            no_method,
-            ..DynamicDerivatives::empty(n)
-        };
+    if entry.downwash.take().is_some() {
+        *s = StaticCoefficients::empty(n);
+        if let Some(d) = &mut entry.dynamic {
+            d.clad = nones(n);
+            d.cmad = nones(n);
+        }
     }
 }
 

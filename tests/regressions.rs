@@ -315,6 +315,9 @@ fn angles_of_attack_out_of_order_are_computed_in_order_with_a_warning() {
 /// angle (α plus the incidence effect), which a one-point curve gives as its value (the
 /// original's TBFUNX); the wing-body CL and every configuration with it were left blank without
 /// a word (a real deck, DanAlex-03 SysID for005.dat, has NALPHA=1; the original prints its CL).
+/// Since the library review, the pages with the downwash at the horizontal tail are not given
+/// at one angle (the downwash is read from the wing's curve as if flat: CM -0.088 where a
+/// schedule gives +0.002), with a warning; the others keep their lift.
 #[test]
 fn one_angle_of_attack_still_gives_the_wing_body_lift() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -326,7 +329,7 @@ fn one_angle_of_attack_still_gives_the_wing_body_lift() {
     let with_wing: Vec<_> = r
         .conditions
         .iter()
-        .filter(|c| c.configuration.starts_with("WING"))
+        .filter(|c| c.configuration.starts_with("WING") && !c.configuration.contains("HORIZONTAL"))
         .collect();
     assert!(with_wing.len() >= 3, "{:?}", r.conditions.len());
     for c in with_wing {
