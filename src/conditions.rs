@@ -130,6 +130,8 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
     }
     let mut out = Vec::with_capacity(pairs.len());
     let mut skipped = 0;
+    // Mach numbers of 0 without a Reynolds number given, with their conditions.
+    let mut still: Vec<(usize, Vec<usize>)> = Vec::new();
     for (i, k) in pairs {
         let given_pt = match (f.pressure.get(k), f.temperature.get(k)) {
             (Some(p), Some(t)) if have_pt => Some((*p, *t)),
@@ -210,6 +212,12 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
             skipped += 1;
             continue;
         }
+        if mach == 0.0 && reynolds == 0.0 && f.reynolds_per_length.get(i).is_none() {
+            match still.iter_mut().find(|(m, _)| *m == i) {
+                Some((_, conditions)) => conditions.push(out.len() + skipped + 1),
+                None => still.push((i, vec![out.len() + skipped + 1])),
+            }
+        }
         out.push(FlightCondition {
             mach,
             altitude,
@@ -220,6 +228,26 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
             mach_index: i,
             altitude_index: k,
         });
+    }
+    for (i, conditions) in still {
+        // A few named, more counted.
+        const NAMED: usize = 4;
+        let which = match conditions.as_slice() {
+            [one] => format!("condition {one}"),
+            few if few.len() <= NAMED => format!(
+                "conditions {}",
+                few.iter()
+                    .map(usize::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            [first, .., last] => format!("{} conditions, {first} to {last}", conditions.len()),
+            [] => continue,
+        };
+        warnings.push(format!(
+            "MACH({}) = 0 ({which}) gives a Reynolds number of 0 (no speed): the skin friction and the viscous terms cannot be computed, nor what needs them (drag, and most coefficients); give the flight's Mach number, or RNNUB",
+            i + 1
+        ));
     }
     (out, warnings)
 }

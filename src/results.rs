@@ -1492,6 +1492,11 @@ fn compute_case(case: &Case) -> CaseResults {
         if let Some((_, problem)) = crate::case::angles_of_attack_problem(&angles, lifting) {
             warnings.push(format!("{problem}: computed as given").into());
         }
+        if case.synthesis.is_none() && case.larwb.is_none() && (lifting || case.body.is_some()) {
+            warnings.push(
+                "the case has no synthesis ($SYNTHS): the centre of gravity and every component's position are taken as 0 (the original does not run such a case)".into(),
+            );
+        }
         warnings.extend(
             crate::methods::experimental::unused_variables(case)
                 .into_iter()

@@ -536,6 +536,30 @@ fn a_planform_error_is_not_blamed_on_the_section() {
     );
 }
 
+/// The library review found common omissions said only through their consequences: a case
+/// without $SYNTHS (six warnings of a wake ahead of the tail), and Mach 0 ("the Reynolds
+/// number 0 is not a positive number" from the skin friction). The run names the cause.
+#[test]
+fn the_cause_of_common_omissions_is_named() {
+    let r = run(&|c: &mut datcom::Case| c.synthesis = None);
+    assert!(
+        says(&r, "the case has no synthesis ($SYNTHS)"),
+        "{:?}",
+        r.warnings
+    );
+    let r = run(&|c: &mut datcom::Case| c.flight.as_mut().unwrap().mach[0] = 0.0);
+    assert!(
+        says(
+            &r,
+            "MACH(1) = 0 (conditions 1, 3) gives a Reynolds number of 0"
+        ),
+        "{:?}",
+        r.warnings
+    );
+    let clean = run(&|_| {});
+    assert!(!says(&clean, "no synthesis") && !says(&clean, "gives a Reynolds number of 0"));
+}
+
 /// The library review found `run_case` computing at 400° without a word, where `check`
 /// gives an error (and named only the first such angle): the run says what `check` says of
 /// the schedule, naming every angle.
