@@ -1486,11 +1486,14 @@ fn compute_case(case: &Case) -> CaseResults {
         );
         // What `check` says of the schedule, said by the run too (a case built in code may
         // not have been checked).
-        let angles: Vec<(usize, f64)> = (1..).zip(f.alpha_deg.iter().copied()).collect();
         let lifting =
             case.wing.is_some() || case.horizontal_tail.is_some() || case.vertical_tail.is_some();
-        if let Some((_, problem)) = crate::case::angles_of_attack_problem(&angles, lifting) {
-            warnings.push(format!("{problem}: computed as given").into());
+        let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
+        if f.alpha_deg.iter().any(|a| a.abs() >= right) {
+            let angles: Vec<(usize, f64)> = (1..).zip(f.alpha_deg.iter().copied()).collect();
+            if let Some((_, problem)) = crate::case::angles_of_attack_problem(&angles, lifting) {
+                warnings.push(format!("{problem}: computed as given").into());
+            }
         }
         if case.synthesis.is_none() && case.larwb.is_none() && (lifting || case.body.is_some()) {
             warnings.push(

@@ -1109,6 +1109,10 @@ impl<'a> Checks<'a> {
     /// The angles of attack ([`angles_of_attack_problem`]).
     fn angles_of_attack(&mut self, lifting_surfaces: bool) {
         let (card, var) = ("FLTCON", "ALSCHD");
+        let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
+        if self.values(card, var).all(|(_, a)| a.abs() < right) {
+            return;
+        }
         let angles: Vec<(usize, f64)> = self.values(card, var).collect();
         if let Some((severity, message)) = angles_of_attack_problem(&angles, lifting_surfaces) {
             self.push(severity, card, Some(var), message, None);
