@@ -960,17 +960,8 @@ impl<'a> Checks<'a> {
         problem: DeckProblem,
         hint: Option<&str>,
     ) {
-        let (line, column) = self.at(card, var);
-        self.out.push(Diagnostic {
-            severity,
-            file: self.file.to_string(),
-            line,
-            column,
-            card: Some(card.to_string()),
-            variable: var.map(str::to_string),
-            problem,
-            hint: hint.map(str::to_string),
-        });
+        let at = self.at(card, var);
+        self.problem_at(severity, at, card, var, problem, hint);
     }
 
     /// A problem of `card` found at a place other than the card's (the case's first line when
@@ -983,15 +974,28 @@ impl<'a> Checks<'a> {
         message: String,
         hint: Option<&str>,
     ) {
-        let (line, column) = at.unwrap_or((self.raw.first_line, 0));
+        let at = at.unwrap_or((self.raw.first_line, 0));
+        let problem = DeckProblem::Physical { message };
+        self.problem_at(severity, at, card, None, problem, hint);
+    }
+
+    fn problem_at(
+        &mut self,
+        severity: Severity,
+        (line, column): (usize, usize),
+        card: &str,
+        var: Option<&str>,
+        problem: DeckProblem,
+        hint: Option<&str>,
+    ) {
         self.out.push(Diagnostic {
             severity,
             file: self.file.to_string(),
             line,
             column,
             card: Some(card.to_string()),
-            variable: None,
-            problem: DeckProblem::Physical { message },
+            variable: var.map(str::to_string),
+            problem,
             hint: hint.map(str::to_string),
         });
     }
