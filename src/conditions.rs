@@ -241,11 +241,16 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
                     .collect::<Vec<_>>()
                     .join(", ")
             ),
-            [first, .., last] => format!("{} conditions, {first} to {last}", conditions.len()),
+            [first, .., last] => format!(
+                "{} conditions, the first {first}, the last {last}",
+                conditions.len()
+            ),
             [] => continue,
         };
+        // The speed is the Mach number's, or the velocity's where no Mach number is given.
+        let speed = if f.mach.is_empty() { "VINF" } else { "MACH" };
         warnings.push(format!(
-            "MACH({}) = 0 ({which}) gives a Reynolds number of 0 (no speed): the skin friction and the viscous terms cannot be computed, nor what needs them (drag, and most coefficients); give the flight's Mach number, or RNNUB",
+            "{speed}({}) = 0 ({which}) gives a Reynolds number of 0 (no speed): the skin friction and the viscous terms cannot be computed, nor what needs them (drag, and most coefficients); give the flight's Mach number, or RNNUB",
             i + 1
         ));
     }

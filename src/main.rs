@@ -497,8 +497,15 @@ fn results_json(path: &Path, rules: Rules) -> Result<Read, ExitCode> {
         eprintln!("datcom-rs: {}: not a result: {e}", path.display());
         ExitCode::from(2)
     })?;
-    if !value["cases"].is_array() {
-        eprintln!("datcom-rs: {name}: a JSON, but not of `run` or `import` (no \"cases\")");
+    // A result's cases have their units and pages (`parse` writes cases too: typed input).
+    let result_case = |c: &serde_json::Value| c["units"].is_object() && c["conditions"].is_array();
+    if !value["cases"]
+        .as_array()
+        .is_some_and(|cases| cases.iter().all(result_case))
+    {
+        eprintln!(
+            "datcom-rs: {name}: a JSON, but not of `run` or `import` (no \"cases\" with units and pages)"
+        );
         return Err(ExitCode::from(2));
     }
     Ok(Read {

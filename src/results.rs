@@ -1316,9 +1316,10 @@ fn with_a_scale_that_is_a_number(case: &Case) -> Option<(Case, Warning)> {
 ///
 /// The build-up reads slopes and the downwash from its curves over the schedule of angles,
 /// as the original does: the values at an angle depend on the other angles given
-/// (docs/tail.md). A schedule of one angle gives no page with the downwash at a
-/// horizontal tail, and CLA and CMA only where they are analytic, with a warning. Angles of ±90° and beyond with a lifting surface, and beyond ±180°,
-/// are computed with a warning, as `check` says of them.
+/// (docs/tail.md). A schedule of one angle gives no longitudinal coefficients on the pages
+/// with the downwash at a horizontal tail, and CLA and CMA only where they are analytic, with
+/// a warning. Angles of ±90° and beyond with a lifting surface, and beyond ±180°, are computed
+/// with a warning, as `check` says of them.
 pub fn run_case(case: &Case) -> CaseResults {
     if let Some((fixed, said)) = with_a_scale_that_is_a_number(case) {
         let mut results = run_case(&fixed);
@@ -1469,6 +1470,8 @@ fn without_non_finite(entry: &mut ConditionResults) -> Option<String> {
 
 fn compute_case(case: &Case) -> CaseResults {
     let mut warnings = Vec::new();
+    // A schedule of one angle left something out ([`without_schedule_readings`]).
+    let mut one_angle_left_out = false;
     let mut conditions = Vec::new();
     // Sections first: the wing methods take the wing's section from here (computed once).
     let sections = sections(case);
@@ -1488,12 +1491,10 @@ fn compute_case(case: &Case) -> CaseResults {
         // not have been checked).
         let lifting =
             case.wing.is_some() || case.horizontal_tail.is_some() || case.vertical_tail.is_some();
-        let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
-        if f.alpha_deg.iter().any(|a| a.abs() >= right) {
-            let angles: Vec<(usize, f64)> = (1..).zip(f.alpha_deg.iter().copied()).collect();
-            if let Some((_, problem)) = crate::case::angles_of_attack_problem(&angles, lifting) {
-                warnings.push(format!("{problem}: computed as given").into());
-            }
+        // By value: the run's schedule is in increasing order, not always the deck's.
+        let angles = f.alpha_deg.iter().map(|&a| (None, a));
+        if let Some((_, problem)) = crate::case::angles_of_attack_problem(angles, lifting) {
+            warnings.push(format!("{problem}: computed as given").into());
         }
         if case.synthesis.is_none() && case.larwb.is_none() && (lifting || case.body.is_some()) {
             warnings.push(
@@ -1684,7 +1685,7 @@ fn compute_case(case: &Case) -> CaseResults {
                     }
                 }
                 if n == 1 {
-                    without_schedule_readings(&mut entry, part);
+                    one_angle_left_out |= without_schedule_readings(&mut entry, part);
                 }
                 if let Some(w) = without_non_finite(&mut entry) {
                     warnings.push(w.into());
@@ -1706,7 +1707,7 @@ fn compute_case(case: &Case) -> CaseResults {
             }
         }
     }
-    if case.flight.as_ref().is_some_and(|f| f.alpha_deg.len() == 1) && !conditions.is_empty() {
+    if one_angle_left_out {
         warnings.push(ONE_ANGLE.into());
     }
     // The same warning from several configurations of a condition is said once (the
@@ -1733,28 +1734,40 @@ fn compute_case(case: &Case) -> CaseResults {
 }
 
 /// What a schedule of one angle of attack does not give ([`without_schedule_readings`]).
-const ONE_ANGLE: &str = "one angle of attack: DATCOM's build-up reads slopes and the downwash at the horizontal tail from its curves over the schedule's angles, which one angle does not give (a curve of one point is flat): CLA and CMA are given only where they are a method's analytic slopes (body alone, wing alone), and the pages with the downwash at a horizontal tail are not given; the other pages' values read their curves at nearby angles as flat (a few per cent); give a schedule of several angles around the one wanted";
+const ONE_ANGLE: &str = "one angle of attack: DATCOM's build-up reads slopes and the downwash at the horizontal tail from its curves over the schedule's angles, which one angle does not give (a curve of one point is flat): CLA and CMA are given only where they are a method's analytic slopes (body, wing and horizontal tail alone), and the longitudinal coefficients of the pages with the downwash at a horizontal tail are not given; the other values read their curves at nearby angles as flat (a few per cent); give a schedule of several angles around the one wanted";
 
 /// A page computed at one angle of attack, without what DATCOM's build-up reads as slopes of
 /// its curves over the schedule (a curve of one point was read with a slope of 0): the slopes
-/// CLA and CMA, except on the body-alone and wing-alone pages, whose first angle's are their
-/// methods' analytic slopes; on a page with the downwash at a horizontal tail (its gradient,
-/// and every coefficient through it) the static coefficients, the downwash table and the α̇
-/// derivatives. The other values stand, as the original prints them (docs/differences.md).
-fn without_schedule_readings(entry: &mut ConditionResults, part: &str) {
-    let n = entry.alpha_deg.len();
+/// CLA and CMA, except on the body-, wing- and horizontal-tail-alone pages, whose first
+/// angle's are their methods' analytic slopes; on a page with the downwash at a horizontal
+/// tail (its gradient, and the longitudinal coefficients through it) CD, CL, CM, CN, CA, XCP,
+/// the downwash table and the α̇ derivatives. The sideslip derivatives stand, as do the other
+/// values, as the original prints them (docs/differences.md). Whether anything was left out.
+fn without_schedule_readings(entry: &mut ConditionResults, part: &str) -> bool {
     let s = &mut entry.static_coefficients;
-    if ![BODY_ALONE, WING_ALONE].contains(&part) {
-        s.cla = nones(n);
-        s.cma = nones(n);
+    let mut left_out = false;
+    let mut leave_out = |column: &mut Vec<Option<f64>>| {
+        for v in column.iter_mut() {
+            left_out |= v.take().is_some();
+        }
+    };
+    if ![BODY_ALONE, WING_ALONE, HORIZONTAL_TAIL].contains(&part) {
+        leave_out(&mut s.cla);
+        leave_out(&mut s.cma);
     }
     if entry.downwash.take().is_some() {
-        *s = StaticCoefficients::empty(n);
-        if let Some(d) = &mut entry.dynamic {
-            d.clad = nones(n);
-            d.cmad = nones(n);
+        for column in [
+            &mut s.cd, &mut s.cl, &mut s.cm, &mut s.cn, &mut s.ca, &mut s.xcp,
+        ] {
+            leave_out(column);
         }
+        if let Some(d) = &mut entry.dynamic {
+            leave_out(&mut d.clad);
+            leave_out(&mut d.cmad);
+        }
+        left_out = true;
     }
+    left_out
 }
 
 /// The section of every surface that has one (coordinates and characteristics), with what

@@ -367,12 +367,20 @@ fn compare_refuses_what_is_no_result_and_a_deck_with_errors() {
     std::fs::write(&csv, &out.stdout).unwrap();
     let not_result = dir.join("other.json");
     std::fs::write(&not_result, "{\"a\": 1}\n").unwrap();
+    // `parse` writes cases too, of typed input (the session review found it accepted).
+    let parsed = dir.join("parsed.json");
+    let out = bin().args(["parse", &example()]).output().unwrap();
+    std::fs::write(&parsed, &out.stdout).unwrap();
     for (file, says) in [
         (format!("{root}/README.md"), "neither a deck"),
         (format!("{root}/Cargo.toml"), "neither a deck"),
         (csv.to_str().unwrap().to_string(), "neither a deck"),
         (
             not_result.to_str().unwrap().to_string(),
+            "not of `run` or `import`",
+        ),
+        (
+            parsed.to_str().unwrap().to_string(),
             "not of `run` or `import`",
         ),
     ] {

@@ -623,6 +623,15 @@ fn a_number_beyond_double_precision_is_one_error_and_not_assigned() {
     assert!(e[0].to_string().contains("found `1E400`"), "{}", e[0]);
     let raw = deck::read(&format!("{MINIMAL} $OPTINS SREF=1E400$\n"), "t");
     assert_eq!(numbers(&raw.cases[0], "OPTINS", "SREF"), [None]);
+    // An element already given keeps its value (the review found it erased).
+    let raw = deck::read(
+        " $FLTCON NMACH=1.0, MACH(1)=0.4, NALPHA=3.0, ALSCHD(1)=0.0,2.0,4.0,\n ALSCHD(2)=1E400$\n",
+        "t",
+    );
+    assert_eq!(
+        numbers(&raw.cases[0], "FLTCON", "ALSCHD"),
+        [Some(0.0), Some(2.0), Some(4.0)]
+    );
 }
 
 /// Found by the user review: a section without its planform was pointed at the case's first
@@ -679,7 +688,9 @@ fn a_listing_of_the_original_is_not_read_as_a_deck() {
     let e = errors(&d);
     assert_eq!(e.len(), 1, "{:?}", d.diagnostics);
     assert_eq!((e[0].line, e[0].column), (1, 1));
-    assert!(e[0].to_string().contains("listing of the original program"));
+    assert!(e[0]
+        .to_string()
+        .contains("this is a listing (the original program's"));
     assert!(e[0]
         .hint
         .as_deref()

@@ -225,8 +225,10 @@ pub struct FlightInput {
     /// STMACH: the Mach number up to which the subsonic methods apply, clamped to 0.6..0.99;
     /// `None`: 0.6.
     pub stmach: Option<f64>,
-    /// TSMACH: the Mach number from which the supersonic methods apply, clamped to
-    /// 1.01..1.4; `None`: 1.4.
+    /// TSMACH: the Mach number from which the original's supersonic methods apply (not
+    /// implemented here); read only to tell whether a Mach number of the case lies between
+    /// STMACH and TSMACH, where the wing at Mach 0 (the downwash's scale) takes CLAMO for the
+    /// section slope. Clamped to 1.01..1.4; `None`: 1.4.
     pub tsmach: Option<f64>,
     /// HYPERS: kept and written back; the hypersonic methods are not implemented.
     pub hypersonic: bool,
@@ -613,7 +615,9 @@ pub struct Case {
     /// SYNTHS SCALE (default 1): the geometry of the typed case is already the deck's times
     /// this factor (lengths, and areas by its square), so it scales no computation. It turns
     /// the reported reference dimensions and PART pages, and the deck [`Case::to_raw`] writes,
-    /// back into the deck's dimensions. One that is not a positive number is taken as 1.
+    /// back into the deck's dimensions. One that is not a positive number, or so small that
+    /// the reference dimensions divided by it overflow, is taken as 1 by `run_case`, with a
+    /// warning.
     pub scale: f64,
     /// The unit of the reported derivatives (DERIV card: per degree unless DERIV RAD); the
     /// results themselves are per radian. This, not `cards.deriv` (the DERIV card as read),
@@ -1033,7 +1037,7 @@ impl<'a> Checks<'a> {
     }
 
     /// The deck's values of an array (or scalar), as written, with their 1-based indices.
-    fn values(&self, card: &str, var: &str) -> impl Iterator<Item = (usize, f64)> + 'a {
+    fn values(&self, card: &str, var: &str) -> impl Iterator<Item = (usize, f64)> + Clone + 'a {
         self.index
             .get(card, var)
             .and_then(Value::numbers)
@@ -1113,12 +1117,8 @@ impl<'a> Checks<'a> {
     /// The angles of attack ([`angles_of_attack_problem`]).
     fn angles_of_attack(&mut self, lifting_surfaces: bool) {
         let (card, var) = ("FLTCON", "ALSCHD");
-        let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
-        if self.values(card, var).all(|(_, a)| a.abs() < right) {
-            return;
-        }
-        let angles: Vec<(usize, f64)> = self.values(card, var).collect();
-        if let Some((severity, message)) = angles_of_attack_problem(&angles, lifting_surfaces) {
+        let angles = self.values(card, var).map(|(i, a)| (Some(i), a));
+        if let Some((severity, message)) = angles_of_attack_problem(angles, lifting_surfaces) {
             self.push(severity, card, Some(var), message, None);
         }
     }
@@ -1143,22 +1143,34 @@ impl<'a> Checks<'a> {
     }
 }
 
-/// What is wrong with a schedule of angles of attack (1-based index and value, deg), naming
-/// every angle concerned: beyond ±180° none is meant (an error); from ±90° the
-/// lifting-surface methods (which divide by cos α) give no meaningful number, although the
-/// body methods do (body-alone decks run to 90° and beyond): a warning when the case has a
-/// lifting surface.
+/// What is wrong with a schedule of angles of attack, naming every angle concerned (by its
+/// 1-based index in the deck when `indices` are given, `ALSCHD(3) = 95`, else by its value,
+/// `alpha = 95`): beyond ±180° none is meant (an error); from ±90° the lifting-surface
+/// methods (which divide by cos α) give no meaningful number, although the body methods do
+/// (body-alone decks run to 90° and beyond): a warning when the case has a lifting surface.
 pub(crate) fn angles_of_attack_problem(
-    angles: &[(usize, f64)],
+    angles: impl Iterator<Item = (Option<usize>, f64)> + Clone,
     lifting_surfaces: bool,
 ) -> Option<(Severity, String)> {
+    let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
+    if angles.clone().all(|(_, a)| a.abs() < right) {
+        return None;
+    }
     let list = |beyond: &dyn Fn(f64) -> bool| {
+        let mut by_value = false;
         let found: Vec<String> = angles
-            .iter()
+            .clone()
             .filter(|(_, a)| beyond(*a))
-            .map(|(i, a)| format!("ALSCHD({i}) = {a}"))
+            .map(|(i, a)| match i {
+                Some(i) => format!("ALSCHD({i}) = {a}"),
+                None => {
+                    by_value = true;
+                    a.to_string()
+                }
+            })
             .collect();
-        (!found.is_empty()).then(|| found.join(", "))
+        let prefix = if by_value { "alpha = " } else { "" };
+        (!found.is_empty()).then(|| format!("{prefix}{}", found.join(", ")))
     };
     if let Some(found) = list(&|a| a.abs() > HALF_TURN_DEG) {
         return Some((
@@ -1166,7 +1178,6 @@ pub(crate) fn angles_of_attack_problem(
             format!("{found} deg: an angle of attack lies between -{HALF_TURN_DEG} and {HALF_TURN_DEG} deg"),
         ));
     }
-    let right = crate::geometry::planform::RIGHT_ANGLE_DEG;
     let found = list(&|a| lifting_surfaces && a.abs() >= right)?;
     let next = if found.contains(',') {
         "these"

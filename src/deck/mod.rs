@@ -592,10 +592,10 @@ impl<'a> Reader<'a> {
             card: None,
             variable: None,
             problem: DeckProblem::Case {
-                message: "this is a listing of the original program (for006.dat), not an input deck".into(),
+                message: "this is a listing (the original program's for006.dat, or a report of `datcom-rs run`), not an input deck".into(),
             },
             hint: Some(
-                "`datcom-rs import` reads a listing into JSON, and `datcom-rs compare` and `report` take one as the reference".into(),
+                "`datcom-rs import` reads a listing in the original's layout (the original's, or `run --format for006`) into JSON, and `datcom-rs compare` and `report` take one as the reference".into(),
             ),
         })
     }
@@ -1498,8 +1498,11 @@ impl Target<'_, '_> {
                     if v.len() < i {
                         v.resize(i, None);
                     }
-                    // A number beyond double precision (said where it was read) is not given.
-                    v[i - 1] = value.is_finite().then_some(*value);
+                    // A number beyond double precision (said where it was read) is not
+                    // assigned: the element keeps what it held.
+                    if value.is_finite() {
+                        v[i - 1] = Some(*value);
+                    }
                 }
                 (Value::Logicals(v), Lit::Logical(b)) => {
                     if v.len() < i {

@@ -401,7 +401,7 @@ pub fn conditions(
                 .is_ok_and(|v| v.iter().any(|x| x.is_some_and(f64::is_finite)))
         })
     };
-    for c in last {
+    for &c in &last {
         if c.condition.altitude_index != first_altitude {
             not_used.push(format!(
                 "{}: only the first altitude is exported",
@@ -422,12 +422,13 @@ pub fn conditions(
         }
     }
     if used.is_empty() {
+        let conditions: Vec<String> = last.iter().map(|c| describe(c)).collect();
         return Err(ExportError::NothingExportable {
             case,
             configuration: format!(
                 "{} ({})",
                 results.configuration.to_lowercase(),
-                not_used.join("; ")
+                conditions.join("; ")
             ),
         });
     }

@@ -178,7 +178,8 @@ pub fn horizontal_tail_alone(
     let analytic = surface.terms.lift_curve_slope.per_rad;
     let mut slope_per_rad = analytic;
     if n > 0 {
-        if low_aspect_ratio_straight {
+        // A schedule of one angle gives a curve without a slope: the analytic one stands.
+        if low_aspect_ratio_straight && n > 1 {
             cla[0] = curve_cla[0];
             cma[0] = curve_cma[0];
             if case.tail_slope == TailSlopeReading::Original {
