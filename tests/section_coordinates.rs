@@ -627,3 +627,32 @@ fn a_user_section_without_npts_is_refused() {
     );
     assert!(e.to_string().contains("NPTS: not given"), "{e}");
 }
+
+/// A review found a section built in code with its coordinates but no NPTS refused by the run
+/// ("NPTS: not given") while `check` passed it (the deck written gives NPTS as the stations'
+/// count). The run counts the stations too; a deck without NPTS stays an error of `check`, as
+/// the original reads no station then.
+#[test]
+fn a_section_built_in_code_counts_its_stations() {
+    let mut input = datcom::case::SectionInput::default();
+    input.scalars.insert("TYPEIN".into(), 1.0);
+    input.xcord = vec![0.0, 0.1, 0.3, 0.5, 0.7, 1.0];
+    input.yupper = vec![0.0, 0.04, 0.06, 0.05, 0.03, 0.0];
+    input.ylower = vec![0.0, -0.02, -0.03, -0.02, -0.01, 0.0];
+    let coordinates = user_defined(&input).expect("the stations counted");
+    assert_eq!(coordinates.rows.len(), 6);
+    let deck = datcom::read_deck(
+        " $FLTCON NMACH=1.0, MACH(1)=0.1, NALPHA=2.0, ALSCHD(1)=0.0,2.0$\n $SYNTHS XCG=0.5$\n\
+         $WGPLNF CHRDR=0.4, CHRDTP=0.3, SSPN=1.0, SSPNE=1.0, TYPE=1.0$\n\
+         $WGSCHR TYPEIN=1.0, XCORD=0.0,0.1,0.3,0.5,0.7,1.0,\n\
+         YUPPER=0.0,0.04,0.06,0.05,0.03,0.0, YLOWER=0.0,-0.02,-0.03,-0.02,-0.01,0.0$\n",
+        "t.dcm",
+    );
+    assert!(
+        deck.diagnostics
+            .iter()
+            .any(|d| d.is_error() && d.variable.as_deref() == Some("NPTS")),
+        "{:?}",
+        deck.diagnostics
+    );
+}

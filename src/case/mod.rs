@@ -1561,6 +1561,13 @@ impl Case {
         use crate::geometry::section::{section_source, user_defined, NacaSection, SectionSource};
         for (name, surface) in SECTION_NAMELISTS {
             match section_source(self, surface) {
+                Some(SectionSource::User(input)) if !input.scalars.contains_key("NPTS") => {
+                    let message = format!(
+                        "{} section: user-defined section: NPTS: not given; it counts the XCORD stations (the original reads none without it)",
+                        surface.name()
+                    );
+                    c.push(Severity::Error, name, Some("NPTS"), message, None);
+                }
                 Some(SectionSource::User(input)) => match user_defined(input) {
                     Err(e @ SectionError::UserSection { variable, .. }) => {
                         let hint = (variable == "XCORD").then_some(

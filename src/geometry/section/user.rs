@@ -117,8 +117,13 @@ fn ordinates(input: &SectionInput) -> Result<Ordinates, SectionError> {
     }
 }
 
+/// NPTS, or for a case built in code without it, the number of XCORD stations (the deck
+/// writer gives NPTS so; a deck without NPTS is an error of its checks, as the original reads
+/// no station then).
 fn point_count(input: &SectionInput) -> Result<usize, SectionError> {
-    match input.scalars.get("NPTS").copied() {
+    let given = input.scalars.get("NPTS").copied();
+    let npts = given.or((!input.xcord.is_empty()).then_some(input.xcord.len() as f64));
+    match npts {
         Some(npts) if npts.is_finite() && npts + 0.5 >= MIN_POINTS as f64 => {
             Ok((npts + 0.5) as usize)
         }
