@@ -847,6 +847,21 @@ fn low_reynolds_number_is_computed_at_the_tested_limit() {
         w,
         datcom::methods::section::SectionWarning::ReynoldsNumberLow { .. }
     )));
+    // A Mach number at two altitudes has two Reynolds numbers: each warning names its flight
+    // condition (the user review found them looking like one warning repeated).
+    let high = SectionCondition {
+        mach: 0.2,
+        reynolds_number: Some(0.9e5),
+    };
+    let r = section_characteristics(&shape, &[low, high], &SectionOverrides::default()).unwrap();
+    let said: Vec<String> = r.warnings.iter().map(ToString::to_string).collect();
+    for k in [1, 2] {
+        assert!(
+            said.iter()
+                .any(|w| w.contains(&format!("at Mach 0.2 (flight condition {k}) is below"))),
+            "{said:?}"
+        );
+    }
 }
 
 /// A deck with user-defined vertical-tail and ventral-fin sections of different LERI.

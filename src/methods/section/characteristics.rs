@@ -63,7 +63,13 @@ pub enum SectionWarning {
     /// No (valid) Reynolds number for a condition: the reference value was used.
     ReynoldsNumberMissing { mach: f64 },
     /// The Reynolds number is below the viscous fit's range: the lowest value was used.
-    ReynoldsNumberLow { mach: f64, reynolds_number: f64 },
+    /// `condition`: the flight condition's number, from 1 (a Mach number at several
+    /// altitudes has several Reynolds numbers).
+    ReynoldsNumberLow {
+        mach: f64,
+        reynolds_number: f64,
+        condition: usize,
+    },
     /// A condition's Mach number is negative or not a number.
     MachInvalid { mach: f64 },
     /// Weber's method cannot compute the slope at a Mach number.
@@ -84,9 +90,10 @@ impl std::fmt::Display for SectionWarning {
             SectionWarning::ReynoldsNumberLow {
                 mach,
                 reynolds_number,
+                condition,
             } => write!(
                 f,
-                "Reynolds number {reynolds_number:.4e} at Mach {} is below the airfoil section method's range: section characteristics computed at {MIN_REYNOLDS_NUMBER:.4e}",
+                "Reynolds number {reynolds_number:.4e} at Mach {} (flight condition {condition}) is below the airfoil section method's range: section characteristics computed at {MIN_REYNOLDS_NUMBER:.4e}",
                 crate::charts::Query(*mach)
             ),
             SectionWarning::MachInvalid { mach } => {

@@ -268,7 +268,7 @@ pub fn section_characteristics_with(
         .enumerate()
         .map(|(i, c)| {
             let user_slope = user.lift_curve_slope_per_rad.get(i).copied().flatten();
-            let row = subsonic.row(c, user_slope, crest.as_ref(), &mut warnings);
+            let row = subsonic.row(c, i, user_slope, crest.as_ref(), &mut warnings);
             exceeded |= row.mach >= critical_mach;
             row
         })
@@ -353,9 +353,11 @@ struct Subsonic<'a> {
 
 impl Subsonic<'_> {
     /// The values at condition `c`; `user_slope` is the user's CLALPA for it, per radian.
+    /// The characteristics of condition `c`, the `index`-th (0-based) of the case's.
     fn row(
         &mut self,
         c: &SectionCondition,
+        index: usize,
         user_slope: Option<f64>,
         crest: Option<&crest::Crest>,
         warnings: &mut Vec<SectionWarning>,
@@ -395,7 +397,7 @@ impl Subsonic<'_> {
             }
             return row;
         }
-        let reynolds = reynolds_number(c, warnings);
+        let reynolds = reynolds_number(c, index, warnings);
         match lift::zero_lift(self.terms, mach, self.start_deg, self.tolerance) {
             Ok(z) => {
                 self.start_deg = z.at.alpha_deg;
@@ -421,14 +423,16 @@ impl Subsonic<'_> {
 }
 
 /// The Reynolds number of a condition for the viscous correction: its own, at least
-/// [`MIN_REYNOLDS_NUMBER`]; [`REFERENCE_REYNOLDS_NUMBER`] when it has none.
-fn reynolds_number(c: &SectionCondition, warnings: &mut Vec<SectionWarning>) -> f64 {
+/// [`MIN_REYNOLDS_NUMBER`]; [`REFERENCE_REYNOLDS_NUMBER`] when it has none. `index`: the
+/// condition's, 0-based (a Mach number at several altitudes has several).
+fn reynolds_number(c: &SectionCondition, index: usize, warnings: &mut Vec<SectionWarning>) -> f64 {
     let mach = c.mach;
     match c.reynolds_number.filter(|r| r.is_finite() && *r > 0.0) {
         Some(r) if r < MIN_REYNOLDS_NUMBER => {
             warnings.push(SectionWarning::ReynoldsNumberLow {
                 mach,
                 reynolds_number: r,
+                condition: index + 1,
             });
             MIN_REYNOLDS_NUMBER
         }
