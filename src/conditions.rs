@@ -130,8 +130,8 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
     }
     let mut out = Vec::with_capacity(pairs.len());
     let mut skipped = 0;
-    // Mach numbers of 0 without a Reynolds number given, with their conditions.
-    let mut still: Vec<(usize, Vec<usize>)> = Vec::new();
+    // Speeds of 0 without a Reynolds number given (by Mach index), with their conditions.
+    let mut at_rest: Vec<(usize, Vec<usize>)> = Vec::new();
     for (i, k) in pairs {
         let given_pt = match (f.pressure.get(k), f.temperature.get(k)) {
             (Some(p), Some(t)) if have_pt => Some((*p, *t)),
@@ -213,9 +213,9 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
             continue;
         }
         if mach == 0.0 && reynolds == 0.0 && f.reynolds_per_length.get(i).is_none() {
-            match still.iter_mut().find(|(m, _)| *m == i) {
+            match at_rest.iter_mut().find(|(m, _)| *m == i) {
                 Some((_, conditions)) => conditions.push(out.len() + skipped + 1),
-                None => still.push((i, vec![out.len() + skipped + 1])),
+                None => at_rest.push((i, vec![out.len() + skipped + 1])),
             }
         }
         out.push(FlightCondition {
@@ -229,7 +229,7 @@ pub fn flight_conditions(f: &FlightInput) -> (Vec<FlightCondition>, Vec<String>)
             altitude_index: k,
         });
     }
-    for (i, conditions) in still {
+    for (i, conditions) in at_rest {
         // A few named, more counted.
         const NAMED: usize = 4;
         let which = match conditions.as_slice() {

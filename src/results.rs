@@ -1489,8 +1489,7 @@ fn compute_case(case: &Case) -> CaseResults {
         );
         // What `check` says of the schedule, said by the run too (a case built in code may
         // not have been checked).
-        let lifting =
-            case.wing.is_some() || case.horizontal_tail.is_some() || case.vertical_tail.is_some();
+        let lifting = case.has_lifting_surface();
         // By value: the run's schedule is in increasing order, not always the deck's.
         let angles = f.alpha_deg.iter().map(|&a| (None, a));
         if let Some((_, problem)) = crate::case::angles_of_attack_problem(angles, lifting) {

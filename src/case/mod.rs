@@ -1516,6 +1516,12 @@ impl Case {
         }
     }
 
+    /// Whether the case has a wing or tail, whose methods (unlike the body's) give no
+    /// meaningful number from ±90° of angle of attack.
+    pub(crate) fn has_lifting_surface(&self) -> bool {
+        self.wing.is_some() || self.horizontal_tail.is_some() || self.vertical_tail.is_some()
+    }
+
     /// Makes a case built in code ready to run, as reading a deck makes a deck's case: the
     /// angles of attack of `flight` put in increasing order (each once) and the flight
     /// conditions derived from it (the 1962 US Standard Atmosphere at the altitudes where
@@ -1782,9 +1788,7 @@ impl Case {
                 }
             }
         }
-        c.angles_of_attack(
-            self.wing.is_some() || self.horizontal_tail.is_some() || self.vertical_tail.is_some(),
-        );
+        c.angles_of_attack(self.has_lifting_surface());
         c.acute("SYNTHS", "ALIW", "the wing's incidence");
         c.acute("SYNTHS", "ALIH", "the horizontal tail's incidence");
         // At least one Mach number's values are read.

@@ -352,8 +352,8 @@ struct Subsonic<'a> {
 }
 
 impl Subsonic<'_> {
-    /// The values at condition `c`; `user_slope` is the user's CLALPA for it, per radian.
-    /// The characteristics of condition `c`, the `index`-th (0-based) of the case's.
+    /// The values at condition `c`, the `index`-th (0-based) of the case's; `user_slope` is
+    /// the user's CLALPA for it, per radian.
     fn row(
         &mut self,
         c: &SectionCondition,
